@@ -1,0 +1,360 @@
+/*
+ * zline: an integer-only 3D rasteriser for microcontrollers.
+ *
+ * ===========================================================================
+ * RASTER CONTRACT (tests/ check every clause exactly)
+ * ===========================================================================
+ * Window coordinates: x grows right, y grows down, origin at the top-left
+ *   corner of the top-left pixel. Pixel (i, j) has its centre at
+ *   (i + 0.5, j + 0.5). Row 0 is the top row.
+ *
+ * Snapping: vertex x and y snap to 1/16 pixel (2^ZL_SUBPIXEL_BITS), rounded
+ *   to nearest; a value exactly half-way rounds towards +infinity (right or
+ *   down).
+ *
+ * Coverage: a pixel is covered when its centre is inside the triangle. A
+ *   centre exactly on an edge is covered only if that edge is a top edge
+ *   (horizontal, with the interior below it) or a left edge (interior to its
+ *   right): the top-left rule. So two triangles sharing an edge never both
+ *   cover a pixel, and a mesh without holes leaves none. Zero-area triangles
+ *   cover nothing.
+ *
+ * Depth: window depth z_w is 0 at the near plane and 1 at the far plane. It
+ *   is sampled at the pixel centre and stored as round(z_w * 65535), within
+ *   +-1 of the exact value of the snapped triangle's depth plane at that
+ *   centre. (Nearly edge-on triangles whose depth changes by more than 2^20
+ *   steps per pixel get depths clamped to their vertices' range instead.)
+ *
+ * Pseudodepth: for the perspective projection, with eye distance z (> 0),
+ *   near n and far f,
+ *       z_w = A + B / z,   A = f / (f - n),   B = -f n / (f - n).
+ *   Why this is linear in screen space: the projection's z row gives
+ *   z_clip = A z + B and w_clip = z, so z_w = z_clip / w_clip. Both z_clip and
+ *   w_clip are affine in eye space; a plane in eye space a x + b y + c z = d
+ *   divided through by z gives a (x/z) + b (y/z) + c = d / z, so 1/z, and
+ *   with it A + B/z, is an affine function of the screen position
+ *   (x/z, y/z). Hence z_w is stepped across a triangle by pure addition.
+ *   z = n gives 0, z = f gives 1, and dz_w/dz = -B/z^2 > 0: monotonic.
+ *
+ * Clipping: triangles are clipped in homogeneous clip space against
+ *   w > 0, near (z >= 0), far (z <= w), and four x/y planes ZL_GUARD_PX
+ *   pixels outside the viewport (the guard band). Pixels outside the target
+ *   are never written (spans are clamped), so a triangle that stays inside
+ *   the guard band covers exactly the in-viewport pixels of the unclipped
+ *   triangle. A triangle through the eye point is clipped at the near plane
+ *   like any other: no wrap-around, no division by zero.
+ *
+ * Order: triangles are drawn in submission order; the depth test decides
+ *   per pixel. Frame mode and the scanline/band modes of zl_frame produce
+ *   byte-identical colour and depth.
+ * ===========================================================================
+ *
+ * Memory: the library never allocates. The caller owns the context, every
+ * buffer (with strides in bytes) and, in scanline mode, one work buffer
+ * whose exact size zl_frame_bytes() returns. There is no global state: two
+ * contexts render independently. All numbers are integers or Q16.16
+ * (zl_fixed.h); core/ uses no floating point.
+ */
+#ifndef ZLINE_H
+#define ZLINE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "zl_config.h"
+#include "zl_fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---------------------------------------------------------------- vectors */
+
+typedef struct {
+    zl_fixed x, y, z;
+} zl_vec3;
+
+/* 4x4 matrix, row-major: m[row * 4 + col]; vectors are columns (v' = M v). */
+typedef struct {
+    zl_fixed m[16];
+} zl_mat4;
+
+void zl_mat4_identity(zl_mat4 *out);
+/* out = a * b (apply b first). Entries saturate instead of wrapping. */
+void zl_mat4_mul(zl_mat4 *out, const zl_mat4 *a, const zl_mat4 *b);
+void zl_mat4_translate(zl_mat4 *out, zl_vec3 t);
+void zl_mat4_scale(zl_mat4 *out, zl_vec3 s);
+/* Rotation about the x, y or z axis, counter-clockwise looking down the axis. */
+void zl_mat4_rotate_x(zl_mat4 *out, zl_angle a);
+void zl_mat4_rotate_y(zl_mat4 *out, zl_angle a);
+void zl_mat4_rotate_z(zl_mat4 *out, zl_angle a);
+/*
+ * View matrix looking from eye towards target (right-handed, camera looks
+ * down its -z). ZL_ERR_RANGE when eye == target or up is parallel to the
+ * view direction.
+ */
+zl_status zl_mat4_look_at(zl_mat4 *out, zl_vec3 eye, zl_vec3 target, zl_vec3 up);
+/*
+ * Perspective projection with the pseudodepth of the contract above.
+ * fovy: vertical field of view, 0 < fovy < half a turn. aspect = width/height
+ * in Q16.16, 1/64 .. 64. 0 < near < far <= 32767. ZL_ERR_RANGE otherwise, or
+ * when the depth constants A = f/(f-n), B = -fn/(f-n) do not fit Q16.16.
+ */
+zl_status zl_mat4_perspective(zl_mat4 *out, zl_angle fovy, zl_fixed aspect, zl_fixed near_z,
+                              zl_fixed far_z);
+/* Orthographic projection of the box [l,r]x[b,t]x[-near,-far] in eye space. */
+zl_status zl_mat4_ortho(zl_mat4 *out, zl_fixed l, zl_fixed r, zl_fixed b, zl_fixed t, zl_fixed near_z,
+                        zl_fixed far_z);
+
+/* Homogeneous clip-space position, Q16.16. */
+typedef struct {
+    zl_fixed x, y, z, w;
+} zl_vec4;
+
+/*
+ * M * (v, 1) with 64-bit accumulation, rounded once. Matrix entries and
+ * positions must lie within +-16384.0 (raw +-2^30) so the sum of products
+ * fits 64 bits; ZL_ERR_RANGE if an input is outside or a component of the
+ * result leaves Q16.16. Meshes whose vertices fail this lose the triangles
+ * that use them.
+ */
+zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out);
+
+/* ------------------------------------------------------------- pseudodepth */
+
+/*
+ * Window depth (0..65535) of eye distance z for the perspective mapping with
+ * the given near and far planes (Q16.16), computed from A + B/z in 64-bit
+ * integers and rounded. z outside [near, far] is clamped.
+ */
+uint16_t zl_depth_of_distance(zl_fixed near_z, zl_fixed far_z, zl_fixed z);
+/*
+ * The precision question: the smallest increase dz of eye distance z that
+ * changes the stored depth by one step, for depth of `bits` bits (1..16):
+ *     dz = k z^2 / (1 - k z),   k = (f - n) / ((2^bits - 1) f n).
+ * Q16.16, rounded up; ZL_FX_MAX when no step is left beyond z.
+ */
+zl_fixed zl_depth_resolution(zl_fixed near_z, zl_fixed far_z, zl_fixed z, unsigned bits);
+
+/* ----------------------------------------------------------------- pixels */
+
+typedef enum {
+    ZL_FORMAT_RGB565 = 0,    /* uint16 per pixel in native byte order */
+    ZL_FORMAT_RGB565_BE = 1, /* RGB565, high byte first: what SPI panels take */
+    ZL_FORMAT_RGB888 = 2     /* 3 bytes per pixel: R, G, B */
+} zl_format;
+
+/* Bytes per pixel of a format, 0 for an unknown one. */
+unsigned zl_format_bytes(zl_format f);
+
+typedef struct {
+    uint8_t r, g, b;
+} zl_rgb;
+
+/* --------------------------------------------------------------- geometry */
+
+/*
+ * A triangle mesh in caller memory; every array may be const in flash.
+ * positions: 3 Q16.16 per vertex, in model space (or, with a NULL matrix,
+ *   in pixel space: x, y in pixels, y down, z = window depth 0..1).
+ * indices: 3 per triangle, each < vertex_count.
+ * vertex_colors (optional): 3 bytes (r, g, b) per vertex, for Gouraud.
+ * face_colors (optional): 3 bytes per triangle, for flat shading;
+ *   without them the state's colour is used.
+ */
+typedef struct {
+    const zl_fixed *positions;
+    const uint16_t *indices;
+    const uint8_t *vertex_colors;
+    const uint8_t *face_colors;
+    uint16_t vertex_count;
+    uint16_t triangle_count;
+} zl_mesh;
+
+/* --------------------------------------------------------------- state */
+
+typedef enum {
+    ZL_NEVER = 0,
+    ZL_LESS = 1,
+    ZL_EQUAL = 2,
+    ZL_LEQUAL = 3,
+    ZL_GREATER = 4,
+    ZL_NOTEQUAL = 5,
+    ZL_GEQUAL = 6,
+    ZL_ALWAYS = 7
+} zl_depth_func;
+
+typedef enum { ZL_CULL_NONE = 0, ZL_CULL_BACK = 1, ZL_CULL_FRONT = 2 } zl_cull;
+/* Winding of front faces as seen on screen (y down, as the viewer sees it). */
+typedef enum { ZL_FRONT_CCW = 0, ZL_FRONT_CW = 1 } zl_front_face;
+typedef enum { ZL_SHADE_FLAT = 0, ZL_SHADE_GOURAUD = 1 } zl_shading;
+
+#define ZL_MASK_R 1u
+#define ZL_MASK_G 2u
+#define ZL_MASK_B 4u
+#define ZL_MASK_RGB 7u
+
+/*
+ * Per-draw render state, as OpenGL's depth and polygon state. Lighting:
+ * when light_on is set, each triangle's colour (flat) or vertex colours
+ * (Gouraud) are scaled by ambient + (255 - ambient) * max(0, n . l) / 255,
+ * n the face normal in model space (front side), l = light_dir, a unit
+ * vector in model space pointing towards the light.
+ */
+typedef struct {
+    uint8_t depth_test;  /* 0: every fragment passes and depth is not written */
+    uint8_t depth_write; /* depth write mask */
+    uint8_t depth_func;  /* zl_depth_func */
+    uint8_t color_mask;  /* ZL_MASK_* bits of the channels written */
+    uint8_t cull;        /* zl_cull */
+    uint8_t front_face;  /* zl_front_face */
+    uint8_t shading;     /* zl_shading */
+    uint8_t light_on;
+    uint8_t ambient;     /* 0..255 */
+    zl_rgb color;        /* flat colour when the mesh has no face colours */
+    zl_vec3 light_dir;
+} zl_state;
+
+/* Defaults: depth test on, LESS, depth write on, all channels, no culling,
+ * CCW front, flat white, no lighting. */
+void zl_state_default(zl_state *s);
+/* ZL_ERR_ARG when an enum field is out of range. */
+zl_status zl_state_check(const zl_state *s);
+
+/* ------------------------------------------------------- frame mode */
+
+/* A full-frame render target: colour and depth in caller memory. */
+typedef struct {
+    void *color;           /* width x height pixels of `format`, or NULL for none */
+    int32_t color_stride;  /* bytes from one row to the next, >= width * bpp */
+    uint16_t *depth;       /* width x height depth values, or NULL for none */
+    int32_t depth_stride;  /* bytes, >= width * 2 and even */
+    uint16_t width, height; /* 1 .. ZL_MAX_DIM */
+    uint8_t format;         /* zl_format */
+} zl_target;
+
+typedef struct {
+    zl_target target;
+    zl_state state;
+} zl_context;
+
+/* Check the target and set the default state. */
+zl_status zl_init(zl_context *ctx, const zl_target *target);
+/* Clear colour (respecting the colour mask) and depth (respecting the
+ * depth write mask), as glClear does. */
+zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth);
+/*
+ * Draw a mesh transformed by mvp (model-view-projection, to clip space), or,
+ * when mvp is NULL, a mesh whose positions are in pixel space. Nothing is
+ * drawn if any argument is invalid (checked before the first pixel).
+ */
+zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp);
+
+/* -------------------------------------------------- scanline and band mode */
+
+/*
+ * zl_frame renders a whole frame a band of rows at a time: band_rows = 1 is
+ * scanline mode (one row of depth, reused for every row), band_rows = height
+ * is a full frame. Geometry is submitted first; then each band is cleared,
+ * every triangle crossing it is filled, and the band is handed to the
+ * caller. Output is byte-identical to zl_draw_mesh into a full target.
+ *
+ * Sizing: every byte lives in the caller's work buffer, whose exact size
+ * zl_frame_bytes() gives for a configuration. Capacities:
+ *   max_meshes     zl_frame_add_mesh calls per frame
+ *   max_vertices   sum of vertex_count over the meshes
+ *   max_triangles  triangles kept after culling and off-screen rejection
+ *                  (the sum of triangle_count always suffices); <= 65535
+ *   max_active     triangles crossing one row at once (the sum of
+ *                  triangle_count always suffices; a clipped triangle
+ *                  counts once per piece, up to 7)
+ * When the submitted scene needs more, the first zl_frame_next_band fails
+ * with ZL_ERR_CAPACITY before drawing anything, and zl_frame_needs() tells
+ * the capacities it needs.
+ */
+typedef struct {
+    uint16_t width, height;
+    uint16_t band_rows;     /* 1 .. height */
+    uint8_t format;         /* zl_format of the colour band */
+    uint8_t color_buffers;  /* 1, or 2 to alternate bands for DMA double buffering */
+    uint8_t gouraud;        /* reserve room for Gouraud gradients (else only flat shading) */
+    uint16_t max_meshes;
+    uint32_t max_vertices;
+    uint32_t max_triangles;
+    uint32_t max_active;
+} zl_frame_config;
+
+/* A finished band: rows first_row .. first_row + rows - 1. */
+typedef struct {
+    uint16_t first_row, rows, width;
+    uint8_t format;
+    const void *color;      /* rows x width pixels */
+    int32_t color_stride;   /* bytes */
+    const uint16_t *depth;  /* rows x width depth values */
+    int32_t depth_stride;   /* bytes */
+} zl_band;
+
+/* What a submitted scene needs (after zl_frame_next_band has planned it). */
+typedef struct {
+    uint32_t triangles;   /* visible triangles kept for the frame */
+    uint32_t active;      /* bound on triangles crossing one row at once */
+} zl_frame_needs_t;
+
+/* Private bookkeeping; the caller allocates it but never touches it. */
+typedef struct zl_frame_mesh zl_frame_mesh;
+typedef struct zl_active zl_active;
+
+typedef struct {
+    zl_frame_config cfg;
+    zl_rgb clear_color;
+    uint16_t clear_depth;
+    uint16_t next_row;       /* first row of the next band */
+    uint8_t planned;
+    uint8_t band_index;
+    uint16_t mesh_count;
+    uint32_t vertex_count;
+    uint32_t triangle_total;
+    zl_frame_needs_t needs;
+    /* carved from the work buffer by zl_frame_begin */
+    zl_frame_mesh *meshes;
+    uint8_t *vcache;         /* packed cached window vertices */
+    uint16_t *row_start;     /* height + 1 offsets into visible[] */
+    uint16_t *visible;       /* visible triangle ids sorted by first row */
+    zl_active *pool;         /* max_active active-triangle records */
+    uint8_t *gouraud;        /* max_active Gouraud gradient records or NULL */
+    uint16_t active_head;    /* first active record, sorted by triangle id */
+    uint16_t free_head;
+    uint16_t *depth_band;
+    uint8_t *color_band[2];
+} zl_frame;
+
+/* Exact number of work-buffer bytes for a configuration; 0 if it is invalid. */
+size_t zl_frame_bytes(const zl_frame_config *cfg);
+
+/* Start a frame in `work`: at least zl_frame_bytes(cfg) bytes, 8-byte aligned
+ * (declare it as uint64_t work[(bytes + 7) / 8]); ZL_ERR_ARG if misaligned. */
+zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
+                         zl_rgb clear_color, uint16_t clear_depth);
+/* Submit a mesh with its transform (NULL: pixel space) and state (copied). */
+zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp,
+                            const zl_state *state);
+/*
+ * Pull form: render the next band and describe it in *band. Returns ZL_OK
+ * with a band, ZL_DONE when all rows are out, or an error. With two colour
+ * buffers the band returned last time stays untouched until the next call
+ * after this one: the display may still be sending it.
+ */
+zl_status zl_frame_next_band(zl_frame *f, zl_band *band);
+/* Push form: call fn for every band in order. Returns 0 when all rows are
+ * out, a negative zl_status on an error of the library, or the first
+ * non-zero value fn returned (which stops the frame). */
+typedef int (*zl_band_fn)(void *user, const zl_band *band);
+int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user);
+/* What the submitted scene needs; valid after the first zl_frame_next_band. */
+zl_frame_needs_t zl_frame_needs(const zl_frame *f);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ZLINE_H */

@@ -1,0 +1,141 @@
+/* Immediate (frame) mode: draw meshes straight into a full target. */
+#include "zl_internal.h"
+
+static int aligned2(const void *p)
+{
+    return ((uintptr_t)p & 1u) == 0;
+}
+
+static zl_status check_target(const zl_target *t)
+{
+    unsigned bpp;
+    if (t->width < 1 || t->height < 1 || t->width > ZL_MAX_DIM || t->height > ZL_MAX_DIM)
+        return ZL_ERR_SIZE;
+    bpp = zl_format_bytes((zl_format)t->format);
+    if (bpp == 0)
+        return ZL_ERR_ARG;
+    if (t->color != NULL) {
+        if (t->color_stride < (int32_t)(t->width * bpp))
+            return ZL_ERR_SIZE;
+        if (bpp == 2 && (!aligned2(t->color) || (t->color_stride & 1)))
+            return ZL_ERR_ARG;
+    }
+    if (t->depth != NULL) {
+        if (t->depth_stride < (int32_t)t->width * 2 || (t->depth_stride & 1))
+            return ZL_ERR_SIZE;
+        if (!aligned2(t->depth))
+            return ZL_ERR_ARG;
+    }
+    return ZL_OK;
+}
+
+zl_status zl_init(zl_context *ctx, const zl_target *target)
+{
+    zl_status st;
+    if (ctx == NULL || target == NULL)
+        return ZL_ERR_ARG;
+    st = check_target(target);
+    if (st != ZL_OK)
+        return st;
+    ctx->target = *target;
+    zl_state_default(&ctx->state);
+    return ZL_OK;
+}
+
+static uint8_t *color_row(const zl_target *t, int32_t y)
+{
+    return t->color ? (uint8_t *)t->color + (size_t)y * (size_t)t->color_stride : NULL;
+}
+
+static uint16_t *depth_row(const zl_target *t, int32_t y)
+{
+    return t->depth ? (uint16_t *)(void *)((uint8_t *)t->depth + (size_t)y * (size_t)t->depth_stride)
+                    : NULL;
+}
+
+zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
+{
+    zl_span_state ss;
+    zl_status st;
+    int32_t y;
+    uint16_t x;
+    if (ctx == NULL)
+        return ZL_ERR_ARG;
+    st = check_target(&ctx->target);
+    if (st == ZL_OK)
+        st = zl_state_check(&ctx->state);
+    if (st != ZL_OK)
+        return st;
+    zl_span_state_init(&ss, &ctx->state, 1, ctx->target.color != NULL, (zl_format)ctx->target.format,
+                       ctx->target.width);
+    for (y = 0; y < ctx->target.height; y++) {
+        uint16_t *z = depth_row(&ctx->target, y);
+        if (ss.bpp != 0)
+            zl_fill_color_row(color_row(&ctx->target, y), &ss, color);
+        if (z != NULL && ctx->state.depth_write)
+            for (x = 0; x < ctx->target.width; x++)
+                z[x] = depth;
+    }
+    return ZL_OK;
+}
+
+zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
+{
+    uint32_t i, n;
+    (void)pixel_space;
+    if (m == NULL)
+        return ZL_ERR_ARG;
+    if ((m->vertex_count > 0 && m->positions == NULL) || (m->triangle_count > 0 && m->indices == NULL))
+        return ZL_ERR_ARG;
+    n = (uint32_t)m->triangle_count * 3u;
+    for (i = 0; i < n; i++)
+        if (m->indices[i] >= m->vertex_count)
+            return ZL_ERR_RANGE;
+    return ZL_OK;
+}
+
+/* Draw one set-up triangle into the target, all its rows. */
+static void draw_rows(const zl_context *ctx, zl_active *t, zl_gouraud *g, const zl_span_state *ss)
+{
+    while (zl_tri_row(t, g, ss, color_row(&ctx->target, t->row), depth_row(&ctx->target, t->row)))
+        ;
+}
+
+zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
+{
+    zl_source src;
+    zl_span_state ss;
+    zl_status st;
+    uint32_t t;
+    if (ctx == NULL)
+        return ZL_ERR_ARG;
+    st = check_target(&ctx->target);
+    if (st == ZL_OK)
+        st = zl_state_check(&ctx->state);
+    if (st == ZL_OK)
+        st = zl_check_mesh(mesh, mvp == NULL);
+    if (st != ZL_OK)
+        return st;
+    src.mesh = mesh;
+    src.mvp = mvp;
+    src.state = &ctx->state;
+    src.cache = NULL;
+    src.width = ctx->target.width;
+    src.height = ctx->target.height;
+    zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
+                       (zl_format)ctx->target.format, ctx->target.width);
+    for (t = 0; t < mesh->triangle_count; t++) {
+        zl_poly poly;
+        unsigned k;
+        if (!zl_tri_polygon(&src, t, &poly))
+            continue;
+        for (k = 1; k + 1 < poly.n; k++) {
+            zl_active tri;
+            zl_gouraud g;
+            if (zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state,
+                             src.width, src.height))
+                draw_rows(ctx, &tri, &g, &ss);
+        }
+    }
+    return ZL_OK;
+}

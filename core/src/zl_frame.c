@@ -1,0 +1,384 @@
+/*
+ * Scanline and band mode: the whole frame a band of rows at a time.
+ *
+ * Planning (first zl_frame_next_band):
+ *   1. every vertex is transformed once into the vertex cache;
+ *   2. every triangle is classified (culling, clipping, row range) and its
+ *      first row counted; a difference array over rows bounds how many
+ *      triangles are active at once, so capacity errors come before any pixel;
+ *   3. a counting sort buckets the visible triangle ids by first row (the
+ *      edge table), in submission order within a bucket.
+ * Per row: the bucket's triangles are set up and merged into the active list,
+ * which stays sorted by id so every pixel sees triangles in submission order
+ * (as frame mode does); each active triangle fills its span of the row and
+ * steps to the next; a triangle leaves after its last row. Work per row is
+ * proportional to the active triangles only.
+ */
+#include <string.h>
+
+#include "zl_internal.h"
+
+struct zl_frame_mesh {
+    zl_mesh mesh;
+    zl_mat4 mvp;
+    zl_state state;
+    zl_span_state span;
+    uint8_t has_mvp;
+    uint32_t tri_base, vert_base;
+};
+
+#define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
+
+typedef struct {
+    size_t meshes, vcache, row_start, visible, pool, gouraud, depth, color0, color1, total;
+} layout;
+
+/* Offsets of every region of the work buffer. The one place that decides
+ * sizes, so zl_frame_bytes is exact by construction. */
+static int layout_of(const zl_frame_config *c, layout *l)
+{
+    size_t bpp = zl_format_bytes((zl_format)c->format);
+    size_t pool, gouraud, diff, band_px;
+    if (c->width < 1 || c->height < 1 || c->width > ZL_MAX_DIM || c->height > ZL_MAX_DIM || bpp == 0 ||
+        c->band_rows < 1 || c->band_rows > c->height || c->color_buffers < 1 || c->color_buffers > 2 ||
+        c->max_meshes < 1 || c->max_meshes > 255 || c->max_triangles > 65535 || c->max_active < 1 ||
+        c->max_active > 65534 || c->max_vertices > 65535u * 255u)
+        return 0;
+    band_px = (size_t)c->width * c->band_rows;
+    pool = (size_t)c->max_active * sizeof(zl_active);
+    gouraud = c->gouraud ? (size_t)c->max_active * sizeof(zl_gouraud) : 0;
+    /* Planning borrows the pool for a difference array of int32 per row. */
+    diff = ((size_t)c->height + 1) * sizeof(int32_t);
+    l->meshes = 0;
+    l->vcache = l->meshes + ALIGN8((size_t)c->max_meshes * sizeof(zl_frame_mesh));
+    l->row_start = l->vcache + ALIGN8((size_t)c->max_vertices * sizeof(zl_cached_vertex));
+    l->visible = l->row_start + ALIGN8(((size_t)c->height + 1) * sizeof(uint16_t));
+    l->pool = l->visible + ALIGN8((size_t)c->max_triangles * sizeof(uint16_t));
+    l->gouraud = l->pool + ALIGN8(pool);
+    if (ALIGN8(pool) + gouraud < diff)
+        gouraud = diff - ALIGN8(pool);
+    l->depth = l->gouraud + ALIGN8(gouraud);
+    l->color0 = l->depth + ALIGN8(band_px * 2);
+    l->color1 = l->color0 + ALIGN8(band_px * bpp);
+    l->total = l->color1 + (c->color_buffers == 2 ? ALIGN8(band_px * bpp) : 0);
+    return 1;
+}
+
+size_t zl_frame_bytes(const zl_frame_config *cfg)
+{
+    layout l;
+    if (cfg == NULL || !layout_of(cfg, &l))
+        return 0;
+    return l.total;
+}
+
+zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
+                         zl_rgb clear_color, uint16_t clear_depth)
+{
+    layout l;
+    uint8_t *w = work;
+    if (f == NULL || cfg == NULL || work == NULL)
+        return ZL_ERR_ARG;
+    if (((uintptr_t)work & 7u) != 0)
+        return ZL_ERR_ARG;
+    if (!layout_of(cfg, &l))
+        return ZL_ERR_SIZE;
+    if (work_bytes < l.total)
+        return ZL_ERR_SIZE;
+    memset(f, 0, sizeof *f);
+    f->cfg = *cfg;
+    f->clear_color = clear_color;
+    f->clear_depth = clear_depth;
+    f->meshes = (zl_frame_mesh *)(void *)(w + l.meshes);
+    f->vcache = w + l.vcache;
+    f->row_start = (uint16_t *)(void *)(w + l.row_start);
+    f->visible = (uint16_t *)(void *)(w + l.visible);
+    f->pool = (zl_active *)(void *)(w + l.pool);
+    f->gouraud = cfg->gouraud ? w + l.gouraud : NULL;
+    f->depth_band = (uint16_t *)(void *)(w + l.depth);
+    f->color_band[0] = w + l.color0;
+    f->color_band[1] = cfg->color_buffers == 2 ? w + l.color1 : w + l.color0;
+    f->active_head = ZL_LIST_END;
+    return ZL_OK;
+}
+
+zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state)
+{
+    zl_frame_mesh *m;
+    zl_status st;
+    if (f == NULL || state == NULL || f->planned)
+        return ZL_ERR_ARG;
+    st = zl_check_mesh(mesh, mvp == NULL);
+    if (st == ZL_OK)
+        st = zl_state_check(state);
+    if (st != ZL_OK)
+        return st;
+    if (state->shading == ZL_SHADE_GOURAUD && !f->cfg.gouraud)
+        return ZL_ERR_CAPACITY;
+    if (f->mesh_count >= f->cfg.max_meshes || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices ||
+        f->triangle_total + mesh->triangle_count > 65535u)
+        return ZL_ERR_CAPACITY;
+    m = &f->meshes[f->mesh_count];
+    m->mesh = *mesh;
+    m->has_mvp = mvp != NULL;
+    if (mvp != NULL)
+        m->mvp = *mvp;
+    m->state = *state;
+    zl_span_state_init(&m->span, state, 1, 1, (zl_format)f->cfg.format, f->cfg.width);
+    m->tri_base = f->triangle_total;
+    m->vert_base = f->vertex_count;
+    f->mesh_count++;
+    f->vertex_count += mesh->vertex_count;
+    f->triangle_total += mesh->triangle_count;
+    return ZL_OK;
+}
+
+static zl_cached_vertex *cache_of(const zl_frame *f)
+{
+    return (zl_cached_vertex *)(void *)f->vcache;
+}
+
+static void source_of(const zl_frame *f, const zl_frame_mesh *m, zl_source *s)
+{
+    s->mesh = &m->mesh;
+    s->mvp = m->has_mvp ? &m->mvp : NULL;
+    s->state = &m->state;
+    s->cache = cache_of(f) + m->vert_base;
+    s->width = f->cfg.width;
+    s->height = f->cfg.height;
+}
+
+/* Row range and piece count of triangle t; 0 when nothing of it shows. */
+static unsigned classify_source(const zl_frame *f, const zl_frame_mesh *m, uint32_t t, int32_t *first,
+                                int32_t *end)
+{
+    zl_source s;
+    zl_poly poly;
+    unsigned k, pieces = 0;
+    source_of(f, m, &s);
+    if (!zl_tri_polygon(&s, t, &poly))
+        return 0;
+    *first = INT16_MAX;
+    *end = 0;
+    for (k = 1; k + 1 < poly.n; k++) {
+        int32_t a, b;
+        if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, f->cfg.width, f->cfg.height,
+                             &a, &b))
+            continue;
+        pieces++;
+        if (a < *first)
+            *first = a;
+        if (b > *end)
+            *end = b;
+    }
+    return pieces;
+}
+
+static void fill_cache(zl_frame *f)
+{
+    uint16_t mi, v;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        zl_source s;
+        source_of(f, m, &s);
+        for (v = 0; v < m->mesh.vertex_count; v++)
+            cache_of(f)[m->vert_base + v] = zl_cache_vertex(&s, v);
+    }
+}
+
+/* Pass over all triangles: count first rows (row_start) and, when diff is
+ * given, add each triangle's pieces over its rows to the difference array. */
+static uint32_t count_pass(zl_frame *f, int32_t *diff, int place)
+{
+    uint32_t visible = 0;
+    uint16_t mi;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        uint32_t t;
+        for (t = 0; t < m->mesh.triangle_count; t++) {
+            int32_t first, end;
+            unsigned pieces = classify_source(f, m, t, &first, &end);
+            if (pieces == 0)
+                continue;
+            if (place) {
+                f->visible[f->row_start[first]++] = (uint16_t)(m->tri_base + t);
+            } else {
+                f->row_start[first]++;
+                diff[first] += (int32_t)pieces;
+                diff[end] -= (int32_t)pieces;
+            }
+            visible++;
+        }
+    }
+    return visible;
+}
+
+static zl_status plan(zl_frame *f)
+{
+    int32_t *diff = (int32_t *)(void *)f->pool;
+    uint32_t running = 0, start = 0, peak = 0, slot;
+    uint16_t h = f->cfg.height, j;
+    fill_cache(f);
+    memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
+    memset(diff, 0, ((size_t)h + 1) * sizeof(int32_t));
+    f->needs.triangles = count_pass(f, diff, 0);
+    for (j = 0; j < h; j++) {
+        running += (uint32_t)diff[j];
+        if (running > peak)
+            peak = running;
+    }
+    f->needs.active = peak;
+    if (f->needs.triangles > f->cfg.max_triangles || f->needs.active > f->cfg.max_active)
+        return ZL_ERR_CAPACITY;
+    /* Counts -> bucket starts; placing advances each to its bucket's end. */
+    for (j = 0; j <= h; j++) {
+        uint16_t n = f->row_start[j];
+        f->row_start[j] = (uint16_t)start;
+        start += n;
+    }
+    count_pass(f, NULL, 1);
+    /* The pool's free list: every record, in order. */
+    for (slot = 0; slot < f->cfg.max_active; slot++)
+        f->pool[slot].next = (uint16_t)(slot + 1u < f->cfg.max_active ? slot + 1u : ZL_LIST_END);
+    f->free_head = 0;
+    f->active_head = ZL_LIST_END;
+    return ZL_OK;
+}
+
+static uint8_t mesh_of_id(const zl_frame *f, uint16_t id)
+{
+    uint8_t mi = 0;
+    while (mi + 1 < f->mesh_count && id >= f->meshes[mi + 1].tri_base)
+        mi++;
+    return mi;
+}
+
+static zl_gouraud *gouraud_of(const zl_frame *f, uint16_t slot)
+{
+    return f->gouraud ? (zl_gouraud *)(void *)(f->gouraud + (size_t)slot * sizeof(zl_gouraud)) : NULL;
+}
+
+/* Set up the pieces of triangle `id` and insert them after *link, keeping
+ * the list sorted; returns the link to insert the next id after. */
+static uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
+{
+    uint8_t mi = mesh_of_id(f, id);
+    const zl_frame_mesh *m = &f->meshes[mi];
+    zl_source s;
+    zl_poly poly;
+    unsigned k;
+    source_of(f, m, &s);
+    if (!zl_tri_polygon(&s, id - m->tri_base, &poly))
+        return link;
+    while (*link != ZL_LIST_END && f->pool[*link].id < id)
+        link = &f->pool[*link].next;
+    for (k = 1; k + 1 < poly.n; k++) {
+        uint16_t slot = f->free_head;
+        zl_active *a;
+        if (slot == ZL_LIST_END)
+            break; /* cannot happen: planning bounded the peak */
+        a = &f->pool[slot];
+        if (!zl_tri_setup(a, gouraud_of(f, slot), &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &m->state,
+                          f->cfg.width, f->cfg.height))
+            continue;
+        f->free_head = a->next;
+        a->id = id;
+        a->mesh = mi;
+        a->next = *link;
+        *link = slot;
+        link = &a->next;
+    }
+    return link;
+}
+
+static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+{
+    uint16_t begin = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y], i;
+    uint16_t *link = &f->active_head;
+    for (i = begin; i < end; i++)
+        link = activate(f, f->visible[i], link);
+    link = &f->active_head;
+    while (*link != ZL_LIST_END) {
+        uint16_t slot = *link;
+        zl_active *a = &f->pool[slot];
+        if (a->row != y) { /* a later piece of a clipped triangle: not started */
+            link = &a->next;
+            continue;
+        }
+        if (zl_tri_row(a, gouraud_of(f, slot), &f->meshes[a->mesh].span, crow, zrow)) {
+            link = &a->next;
+        } else {
+            *link = a->next;
+            a->next = f->free_head;
+            f->free_head = slot;
+        }
+    }
+}
+
+zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
+{
+    uint16_t rows, r, w;
+    size_t bpp;
+    uint8_t *color;
+    zl_span_state clear;
+    zl_state full;
+    if (f == NULL || band == NULL)
+        return ZL_ERR_ARG;
+    if (!f->planned) {
+        zl_status st = plan(f);
+        if (st != ZL_OK)
+            return st;
+        f->planned = 1;
+    }
+    if (f->next_row >= f->cfg.height)
+        return ZL_DONE;
+    w = f->cfg.width;
+    bpp = zl_format_bytes((zl_format)f->cfg.format);
+    rows = (uint16_t)(f->cfg.height - f->next_row);
+    if (rows > f->cfg.band_rows)
+        rows = f->cfg.band_rows;
+    color = f->color_band[f->band_index];
+    zl_state_default(&full);
+    zl_span_state_init(&clear, &full, 1, 1, (zl_format)f->cfg.format, w);
+    for (r = 0; r < rows; r++) {
+        uint8_t *crow = color + (size_t)r * w * bpp;
+        uint16_t *zrow = f->depth_band + (size_t)r * w;
+        uint16_t x;
+        zl_fill_color_row(crow, &clear, f->clear_color);
+        for (x = 0; x < w; x++)
+            zrow[x] = f->clear_depth;
+        render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
+    }
+    band->first_row = f->next_row;
+    band->rows = rows;
+    band->width = w;
+    band->format = f->cfg.format;
+    band->color = color;
+    band->color_stride = (int32_t)(w * bpp);
+    band->depth = f->depth_band;
+    band->depth_stride = (int32_t)w * 2;
+    f->next_row = (uint16_t)(f->next_row + rows);
+    if (f->cfg.color_buffers == 2)
+        f->band_index ^= 1u;
+    return ZL_OK;
+}
+
+int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user)
+{
+    zl_band band;
+    zl_status st;
+    if (fn == NULL)
+        return ZL_ERR_ARG;
+    while ((st = zl_frame_next_band(f, &band)) == ZL_OK) {
+        int r = fn(user, &band);
+        if (r != 0)
+            return r;
+    }
+    return st == ZL_DONE ? 0 : st;
+}
+
+zl_frame_needs_t zl_frame_needs(const zl_frame *f)
+{
+    zl_frame_needs_t none = {0, 0};
+    return f ? f->needs : none;
+}

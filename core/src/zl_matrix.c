@@ -1,0 +1,227 @@
+/* 4x4 matrices in Q16.16: building, multiplying and applying them. */
+#include "zline/zline.h"
+
+#define M(r, c) m[(r) * 4 + (c)]
+#define ZL_COORD_LIMIT ((int32_t)1 << 30) /* +-16384.0: keeps 4 products inside int64 */
+
+void zl_mat4_identity(zl_mat4 *out)
+{
+    int i;
+    for (i = 0; i < 16; i++)
+        out->m[i] = (i % 5 == 0) ? ZL_FX_ONE : 0;
+}
+
+void zl_mat4_mul(zl_mat4 *out, const zl_mat4 *a, const zl_mat4 *b)
+{
+    zl_mat4 r;
+    int row, col, k;
+    for (row = 0; row < 4; row++) {
+        for (col = 0; col < 4; col++) {
+            /* Each product is pre-shifted by 8 so four of them cannot overflow. */
+            int64_t acc = 0;
+            for (k = 0; k < 4; k++)
+                acc += zl_floor_shift64((int64_t)a->M(row, k) * b->M(k, col), 8);
+            r.M(row, col) = zl_fx_sat(zl_floor_shift64(acc + 128, 8));
+        }
+    }
+    *out = r;
+}
+
+void zl_mat4_translate(zl_mat4 *out, zl_vec3 t)
+{
+    zl_mat4_identity(out);
+    out->M(0, 3) = t.x;
+    out->M(1, 3) = t.y;
+    out->M(2, 3) = t.z;
+}
+
+void zl_mat4_scale(zl_mat4 *out, zl_vec3 s)
+{
+    zl_mat4_identity(out);
+    out->M(0, 0) = s.x;
+    out->M(1, 1) = s.y;
+    out->M(2, 2) = s.z;
+}
+
+/* Rotation in the plane of axes (i, j): i -> j for a positive angle. */
+static void rotate_plane(zl_mat4 *out, int i, int j, zl_angle a)
+{
+    zl_fixed c = zl_cos(a), s = zl_sin(a);
+    zl_mat4_identity(out);
+    out->M(i, i) = c;
+    out->M(i, j) = -s;
+    out->M(j, i) = s;
+    out->M(j, j) = c;
+}
+
+void zl_mat4_rotate_x(zl_mat4 *out, zl_angle a)
+{
+    rotate_plane(out, 1, 2, a);
+}
+
+void zl_mat4_rotate_y(zl_mat4 *out, zl_angle a)
+{
+    rotate_plane(out, 2, 0, a);
+}
+
+void zl_mat4_rotate_z(zl_mat4 *out, zl_angle a)
+{
+    rotate_plane(out, 0, 1, a);
+}
+
+/* Unit vector along v, Q16.16; ZL_ERR_RANGE for the zero vector. */
+static zl_status normalize(zl_vec3 v, zl_vec3 *out)
+{
+    uint64_t sq = (uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) +
+                  (uint64_t)((int64_t)v.z * v.z);
+    int64_t len = zl_isqrt64(sq); /* |v| in Q16.16 units */
+    if (len == 0)
+        return ZL_ERR_RANGE;
+    out->x = (zl_fixed)zl_round_div64((int64_t)v.x * 65536, len);
+    out->y = (zl_fixed)zl_round_div64((int64_t)v.y * 65536, len);
+    out->z = (zl_fixed)zl_round_div64((int64_t)v.z * 65536, len);
+    return ZL_OK;
+}
+
+static zl_fixed cross_component(zl_fixed a1, zl_fixed b2, zl_fixed a2, zl_fixed b1)
+{
+    return zl_fx_sat(zl_floor_shift64((int64_t)a1 * b2 - (int64_t)a2 * b1 + 32768, 16));
+}
+
+static zl_vec3 cross(zl_vec3 a, zl_vec3 b)
+{
+    zl_vec3 r;
+    r.x = cross_component(a.y, b.z, a.z, b.y);
+    r.y = cross_component(a.z, b.x, a.x, b.z);
+    r.z = cross_component(a.x, b.y, a.y, b.x);
+    return r;
+}
+
+static zl_fixed dot(zl_vec3 a, zl_vec3 b)
+{
+    int64_t d = (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+    return zl_fx_sat(zl_floor_shift64(d + 32768, 16));
+}
+
+zl_status zl_mat4_look_at(zl_mat4 *out, zl_vec3 eye, zl_vec3 target, zl_vec3 up)
+{
+    zl_vec3 f, s, u, dir;
+    if (out == NULL)
+        return ZL_ERR_ARG;
+    dir.x = zl_fx_sat((int64_t)target.x - eye.x);
+    dir.y = zl_fx_sat((int64_t)target.y - eye.y);
+    dir.z = zl_fx_sat((int64_t)target.z - eye.z);
+    if (normalize(dir, &f) != ZL_OK)
+        return ZL_ERR_RANGE;
+    if (normalize(cross(f, up), &s) != ZL_OK)
+        return ZL_ERR_RANGE;
+    u = cross(s, f);
+    zl_mat4_identity(out);
+    out->M(0, 0) = s.x;
+    out->M(0, 1) = s.y;
+    out->M(0, 2) = s.z;
+    out->M(0, 3) = -dot(s, eye);
+    out->M(1, 0) = u.x;
+    out->M(1, 1) = u.y;
+    out->M(1, 2) = u.z;
+    out->M(1, 3) = -dot(u, eye);
+    out->M(2, 0) = -f.x;
+    out->M(2, 1) = -f.y;
+    out->M(2, 2) = -f.z;
+    out->M(2, 3) = dot(f, eye);
+    return ZL_OK;
+}
+
+zl_status zl_mat4_perspective(zl_mat4 *out, zl_angle fovy, zl_fixed aspect, zl_fixed near_z,
+                              zl_fixed far_z)
+{
+    zl_fixed half_sin, half_cos, cot, a, b;
+    if (out == NULL)
+        return ZL_ERR_ARG;
+    if (fovy <= 0 || fovy >= ZL_ANGLE_TURN / 2 || aspect < ZL_FX_ONE / 64 ||
+        aspect > 64 * ZL_FX_ONE || near_z <= 0 || far_z <= near_z)
+        return ZL_ERR_RANGE;
+    half_sin = zl_sin(fovy / 2);
+    half_cos = zl_cos(fovy / 2);
+    if (zl_fx_div_checked(half_cos, half_sin, &cot) != ZL_OK)
+        return ZL_ERR_RANGE;
+    /* A = f / (f - n), B = -f n / (f - n): the pseudodepth constants. */
+    if (zl_fx_div_checked(far_z, far_z - near_z, &a) != ZL_OK)
+        return ZL_ERR_RANGE;
+    {
+        int64_t fn = (int64_t)far_z * near_z; /* Q32 */
+        int64_t q = zl_round_div64(fn, (int64_t)(far_z - near_z)); /* Q16 */
+        if (q > INT32_MAX)
+            return ZL_ERR_RANGE;
+        b = (zl_fixed)-q;
+    }
+    for (int i = 0; i < 16; i++)
+        out->m[i] = 0;
+    if (zl_fx_div_checked(cot, aspect, &out->M(0, 0)) != ZL_OK)
+        return ZL_ERR_RANGE;
+    out->M(1, 1) = cot;
+    /* z_clip = A * (-z_eye) + B, w_clip = -z_eye: z_clip / w_clip = A + B / distance. */
+    out->M(2, 2) = -a;
+    out->M(2, 3) = b;
+    out->M(3, 2) = -ZL_FX_ONE;
+    return ZL_OK;
+}
+
+zl_status zl_mat4_ortho(zl_mat4 *out, zl_fixed l, zl_fixed r, zl_fixed b, zl_fixed t, zl_fixed near_z,
+                        zl_fixed far_z)
+{
+    zl_fixed sx, sy, sz;
+    if (out == NULL)
+        return ZL_ERR_ARG;
+    if (r <= l || t <= b || far_z <= near_z)
+        return ZL_ERR_RANGE;
+    /* Differences are formed in 64 bits: r - l may exceed Q16.16. */
+    if ((int64_t)r - l > INT32_MAX || (int64_t)t - b > INT32_MAX || (int64_t)far_z - near_z > INT32_MAX)
+        return ZL_ERR_RANGE;
+    if (zl_fx_div_checked(2 * ZL_FX_ONE, r - l, &sx) != ZL_OK ||
+        zl_fx_div_checked(2 * ZL_FX_ONE, t - b, &sy) != ZL_OK ||
+        zl_fx_div_checked(ZL_FX_ONE, far_z - near_z, &sz) != ZL_OK)
+        return ZL_ERR_RANGE;
+    zl_mat4_identity(out);
+    out->M(0, 0) = sx;
+    out->M(0, 3) = zl_fx_sat(-zl_round_div64(((int64_t)r + l) * 65536, (int64_t)r - l));
+    out->M(1, 1) = sy;
+    out->M(1, 3) = zl_fx_sat(-zl_round_div64(((int64_t)t + b) * 65536, (int64_t)t - b));
+    /* depth = (distance - n) / (f - n): 0 at near, 1 at far, w = 1. */
+    out->M(2, 2) = -sz;
+    out->M(2, 3) = zl_fx_sat(-zl_round_div64((int64_t)near_z * 65536, (int64_t)far_z - near_z));
+    return ZL_OK;
+}
+
+static int in_coord_range(zl_fixed v)
+{
+    return v >= -ZL_COORD_LIMIT && v <= ZL_COORD_LIMIT;
+}
+
+zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out)
+{
+    zl_fixed *res[4];
+    int row;
+    if (m == NULL || out == NULL)
+        return ZL_ERR_ARG;
+    if (!in_coord_range(v.x) || !in_coord_range(v.y) || !in_coord_range(v.z))
+        return ZL_ERR_RANGE;
+    res[0] = &out->x;
+    res[1] = &out->y;
+    res[2] = &out->z;
+    res[3] = &out->w;
+    for (row = 0; row < 4; row++) {
+        const zl_fixed *r = &m->m[row * 4];
+        int64_t acc;
+        if (!in_coord_range(r[0]) || !in_coord_range(r[1]) || !in_coord_range(r[2]) ||
+            !in_coord_range(r[3]))
+            return ZL_ERR_RANGE;
+        acc = (int64_t)r[0] * v.x + (int64_t)r[1] * v.y + (int64_t)r[2] * v.z +
+              (int64_t)r[3] * ZL_FX_ONE;
+        acc = zl_floor_shift64(acc + 32768, 16);
+        if (acc > INT32_MAX || acc < INT32_MIN)
+            return ZL_ERR_RANGE;
+        *res[row] = (zl_fixed)acc;
+    }
+    return ZL_OK;
+}

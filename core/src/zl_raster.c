@@ -1,0 +1,480 @@
+/*
+ * Triangle scan conversion: classify (cull, row range), setup (edge steppers
+ * and attribute planes), and per-row span generation and fill.
+ *
+ * Coverage is decided exactly: at row j (centre y = 16 j + 8 subpixels) an
+ * edge from (xt, yt) down to (xb, yb) crosses at
+ *     xe = xt + (16 j + 8 - yt) * dx / dy,
+ * and the first pixel whose centre is at or right of it is
+ *     i = ceil((xe - 8) / 16) = ceil(N / D),
+ *     N = (xt - 8) dy + (16 j + 8 - yt) dx,   D = 16 dy.
+ * A left edge starts its span at i (centre on the edge: covered), a right edge
+ * ends it before i (centre on the edge: not covered); rows run from the first
+ * centre at or below the top vertex to the last centre above the bottom one.
+ * That is the top-left rule, in integers, and because N/D depends only on the
+ * edge's two endpoints, a shared edge splits its pixels identically for both
+ * triangles.
+ */
+#include <string.h>
+
+#include "zl_internal.h"
+
+/* ceil(v / 2^SUB) of a subpixel coordinate minus the half-pixel offset:
+ * the index of the first row (or column) whose centre is at or after v. */
+static int32_t first_centre_at_or_after(int32_t v)
+{
+    return (int32_t)zl_floor_shift64((int64_t)v - ZL_SUB_HALF + ZL_SUB_ONE - 1, ZL_SUB_BITS);
+}
+
+static int64_t signed_area2(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c)
+{
+    return ((int64_t)b->x - a->x) * ((int64_t)c->y - a->y) -
+           ((int64_t)c->x - a->x) * ((int64_t)b->y - a->y);
+}
+
+static int32_t min3(int32_t a, int32_t b, int32_t c)
+{
+    int32_t m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static int32_t max3(int32_t a, int32_t b, int32_t c)
+{
+    int32_t m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+int zl_tri_classify(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_state *st,
+                    uint16_t width, uint16_t height, int32_t *first, int32_t *end)
+{
+    int64_t area = signed_area2(a, b, c);
+    int front;
+    int32_t xmin, xmax;
+    if (area == 0)
+        return 0;
+    /* y grows down, so a positive area is clockwise as the viewer sees it. */
+    front = (area < 0) == (st->front_face == ZL_FRONT_CCW);
+    if ((st->cull == ZL_CULL_BACK && !front) || (st->cull == ZL_CULL_FRONT && front))
+        return 0;
+    *first = first_centre_at_or_after(min3(a->y, b->y, c->y));
+    *end = first_centre_at_or_after(max3(a->y, b->y, c->y));
+    if (*first < 0)
+        *first = 0;
+    if (*end > height)
+        *end = height;
+    if (*first >= *end)
+        return 0;
+    xmin = min3(a->x, b->x, c->x);
+    xmax = max3(a->x, b->x, c->x);
+    if (first_centre_at_or_after(xmin) >= width || first_centre_at_or_after(xmax) <= 0)
+        return 0;
+    return 1;
+}
+
+/* Start edge top -> bot (top->y < bot->y) at row j. */
+static void edge_init(zl_edge *e, const zl_wvert *top, const zl_wvert *bot, int32_t j)
+{
+    int64_t dy = (int64_t)bot->y - top->y, dx = (int64_t)bot->x - top->x;
+    int64_t d = dy * ZL_SUB_ONE;
+    int64_t n = ((int64_t)top->x - ZL_SUB_HALF) * dy +
+                ((int64_t)j * ZL_SUB_ONE + ZL_SUB_HALF - top->y) * dx;
+    int64_t q = zl_ceil_div64(n, d);
+    int64_t step = zl_floor_div64(dx * ZL_SUB_ONE, d);
+    e->x = (int32_t)q;
+    e->rem = (int32_t)(q * d - n);
+    e->den = (int32_t)d;
+    e->step = (int32_t)step;
+    e->rstep = (int32_t)(dx * ZL_SUB_ONE - step * d);
+}
+
+static void edge_step(zl_edge *e)
+{
+    e->x += e->step;
+    e->rem -= e->rstep;
+    if (e->rem < 0) {
+        e->rem += e->den;
+        e->x += 1;
+    }
+}
+
+static int64_t clamp64(int64_t v, int64_t lo, int64_t hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+/* round(s * 2^sh / c), c > 0, split into quotient and remainder so that no
+ * intermediate exceeds 64 bits; saturates at +-limit. */
+static int64_t muldiv_pow2(int64_t s, unsigned sh, int64_t c, int64_t limit)
+{
+    int64_t q = s / c, r = s % c;
+    if (q > (limit >> sh) || q < -(limit >> sh))
+        return q > 0 ? limit : -limit;
+    return clamp64(q * ((int64_t)1 << sh) + zl_round_div64(r * ((int64_t)1 << sh), c), -limit, limit);
+}
+
+typedef struct {
+    int64_t dx1, dy1, dx2, dy2, c; /* edge vectors from v0 and their cross product (!= 0) */
+    int32_t ax, ay;                /* anchor pixel */
+    int64_t ox, oy;                /* anchor centre minus v0, subpixels */
+    int32_t first;
+} plane_frame;
+
+/* Attribute plane through values a0, a1, a2 (Q16) at the sorted vertices. */
+static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1, int64_t a2)
+{
+    const unsigned sh = ZL_SUB_BITS + (ZL_ATTR_FRAC - 16);
+    int64_t da1 = a1 - a0, da2 = a2 - a0;
+    /* Solve da = alpha dx + beta dy for both edges (Cramer): alpha = ga / c,
+     * beta = gb / c; then make the denominator positive. */
+    int64_t ga = da1 * pf->dy2 - da2 * pf->dy1;
+    int64_t gb = pf->dx1 * da2 - pf->dx2 * da1;
+    int64_t c = pf->c, base;
+    if (c < 0) {
+        c = -c;
+        ga = -ga;
+        gb = -gb;
+    }
+    at->dx = muldiv_pow2(ga, sh, c, ZL_GRAD_LIMIT);
+    at->dy = muldiv_pow2(gb, sh, c, ZL_GRAD_LIMIT);
+    /* Value at the anchor pixel's centre, less than half a pixel from v0. */
+    base = a0 * (1 << (ZL_ATTR_FRAC - 16)) +
+           muldiv_pow2(ga * pf->ox + gb * pf->oy, ZL_ATTR_FRAC - 16, c, (int64_t)1 << 44);
+    at->row = base + (int64_t)(pf->first - pf->ay) * at->dy;
+}
+
+static void sort3(const zl_wvert **v)
+{
+    const zl_wvert *t;
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+    if (v[2]->y < v[1]->y) {
+        t = v[1];
+        v[1] = v[2];
+        v[2] = t;
+    }
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+}
+
+int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b,
+                 const zl_wvert *c, const zl_poly *poly, const zl_state *st, uint16_t width,
+                 uint16_t height)
+{
+    const zl_wvert *v[3];
+    int32_t first, end, mid;
+    int64_t cross;
+    plane_frame pf;
+    zl_edge upper;
+    int long_left, k;
+    if (!zl_tri_classify(a, b, c, st, width, height, &first, &end))
+        return 0;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    sort3(v);
+    cross = signed_area2(v[0], v[1], v[2]);
+    long_left = cross > 0; /* v1 right of the long edge v0 -> v2 */
+    mid = first_centre_at_or_after(v[1]->y);
+    if (mid < first)
+        mid = first;
+    if (mid > end)
+        mid = end;
+    t->row = (int16_t)first;
+    t->mid = (int16_t)mid;
+    t->end = (int16_t)end;
+    t->lower_is_left = (uint8_t)!long_left;
+    if (long_left)
+        edge_init(&t->left, v[0], v[2], first);
+    else
+        edge_init(&t->right, v[0], v[2], first);
+    if (mid < end)
+        edge_init(&t->lower, v[1], v[2], mid);
+    if (first < mid) {
+        edge_init(&upper, v[0], v[1], first);
+    } else {
+        upper = t->lower;
+    }
+    if (long_left)
+        t->right = upper;
+    else
+        t->left = upper;
+
+    pf.dx1 = (int64_t)v[1]->x - v[0]->x;
+    pf.dy1 = (int64_t)v[1]->y - v[0]->y;
+    pf.dx2 = (int64_t)v[2]->x - v[0]->x;
+    pf.dy2 = (int64_t)v[2]->y - v[0]->y;
+    pf.c = cross;
+    pf.ax = (int32_t)zl_floor_shift64(v[0]->x, ZL_SUB_BITS);
+    pf.ay = (int32_t)zl_floor_shift64(v[0]->y, ZL_SUB_BITS);
+    pf.ox = (int64_t)pf.ax * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->x;
+    pf.oy = (int64_t)pf.ay * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->y;
+    pf.first = first;
+    t->ax = pf.ax;
+    plane_setup(&t->z, &pf, v[0]->z, v[1]->z, v[2]->z);
+    t->zlo = v[0]->z;
+    t->zhi = v[0]->z;
+    for (k = 1; k < 3; k++) {
+        if (v[k]->z < t->zlo)
+            t->zlo = v[k]->z;
+        if (v[k]->z > t->zhi)
+            t->zhi = v[k]->z;
+    }
+    t->rgb[0] = poly->flat.r;
+    t->rgb[1] = poly->flat.g;
+    t->rgb[2] = poly->flat.b;
+    if (g != NULL && st->shading == ZL_SHADE_GOURAUD) {
+        /* Colours are Q8; the plane takes Q16. */
+        plane_setup(&g->c[0], &pf, (int64_t)v[0]->r * 256, (int64_t)v[1]->r * 256, (int64_t)v[2]->r * 256);
+        plane_setup(&g->c[1], &pf, (int64_t)v[0]->g * 256, (int64_t)v[1]->g * 256, (int64_t)v[2]->g * 256);
+        plane_setup(&g->c[2], &pf, (int64_t)v[0]->b * 256, (int64_t)v[1]->b * 256, (int64_t)v[2]->b * 256);
+    }
+    return 1;
+}
+
+/* ------------------------------------------------------------ span fill */
+
+/* Memory bytes of colour c in a format (2 or 3 of them). */
+static void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, uint8_t out[3])
+{
+    if (f == ZL_FORMAT_RGB888) {
+        out[0] = (uint8_t)r;
+        out[1] = (uint8_t)g;
+        out[2] = (uint8_t)b;
+    } else {
+        uint16_t v = (uint16_t)(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+        if (f == ZL_FORMAT_RGB565_BE) {
+            out[0] = (uint8_t)(v >> 8);
+            out[1] = (uint8_t)(v & 0xFFu);
+        } else {
+            memcpy(out, &v, 2); /* native byte order */
+        }
+        out[2] = 0;
+    }
+}
+
+void zl_span_state_init(zl_span_state *ss, const zl_state *st, int has_depth, int has_color,
+                        zl_format format, uint16_t width)
+{
+    uint8_t m[3];
+    int test = st->depth_test && has_depth;
+    ss->func = test ? st->depth_func : (uint8_t)ZL_ALWAYS;
+    ss->zwrite = (uint8_t)(test && st->depth_write);
+    ss->bpp = has_color ? (uint8_t)zl_format_bytes(format) : 0;
+    ss->format = (uint8_t)format;
+    ss->gouraud = st->shading == ZL_SHADE_GOURAUD;
+    ss->width = width;
+    /* The mask's own bit pattern: a colour with the written channels at 255. */
+    pack_color(format, (st->color_mask & ZL_MASK_R) ? 255u : 0u, (st->color_mask & ZL_MASK_G) ? 255u : 0u,
+               (st->color_mask & ZL_MASK_B) ? 255u : 0u, m);
+    ss->keep[0] = (uint8_t)~m[0];
+    ss->keep[1] = (uint8_t)~m[1];
+    ss->keep[2] = (uint8_t)~m[2];
+}
+
+static inline int depth_pass(unsigned func, uint32_t d, uint32_t stored)
+{
+    switch (func) {
+    case ZL_NEVER:
+        return 0;
+    case ZL_LESS:
+        return d < stored;
+    case ZL_EQUAL:
+        return d == stored;
+    case ZL_LEQUAL:
+        return d <= stored;
+    case ZL_GREATER:
+        return d > stored;
+    case ZL_NOTEQUAL:
+        return d != stored;
+    case ZL_GEQUAL:
+        return d >= stored;
+    default:
+        return 1;
+    }
+}
+
+/* Depth of a Q14 stepper value with the rounding half already added:
+ * clamped to 0..65535 (a wrapped negative value is huge). */
+static inline uint32_t depth_of(uint32_t zq)
+{
+    uint32_t d = zq >> 14;
+    if (d > 65535u)
+        d = zq >= 0x80000000u ? 0u : 65535u;
+    return d;
+}
+
+static inline void put_pixel(uint8_t *p, unsigned bpp, const uint8_t *pix, const uint8_t *keep)
+{
+    if (bpp == 2) {
+        uint16_t v, k, old;
+        memcpy(&v, pix, 2);
+        memcpy(&k, keep, 2);
+        old = *(uint16_t *)(void *)p;
+        *(uint16_t *)(void *)p = (uint16_t)((old & k) | v);
+    } else {
+        p[0] = (uint8_t)((p[0] & keep[0]) | pix[0]);
+        p[1] = (uint8_t)((p[1] & keep[1]) | pix[1]);
+        p[2] = (uint8_t)((p[2] & keep[2]) | pix[2]);
+    }
+}
+
+/* The common case in its own loop: RGB565 (either byte order), all channels,
+ * depth LESS with write. `func` is a constant at each call, so the compiler
+ * specialises the depth test. */
+static inline void span_flat_565(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                 uint32_t dz, uint16_t pixel)
+{
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zrow[i])) {
+            zrow[i] = (uint16_t)d;
+            crow[i] = pixel;
+        }
+        z += dz;
+    }
+}
+
+static void span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                      uint32_t dz, const uint8_t *pix)
+{
+    unsigned func = ss->func, bpp = ss->bpp;
+    int32_t i;
+    if (bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+        (func == ZL_LESS || func == ZL_LEQUAL)) {
+        uint16_t pixel;
+        memcpy(&pixel, pix, 2);
+        if (func == ZL_LESS)
+            span_flat_565(ZL_LESS, (uint16_t *)(void *)crow, zrow, n, z, dz, pixel);
+        else
+            span_flat_565(ZL_LEQUAL, (uint16_t *)(void *)crow, zrow, n, z, dz, pixel);
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
+            if (ss->zwrite)
+                zrow[i] = (uint16_t)d;
+            if (bpp != 0)
+                put_pixel(crow + (size_t)i * bpp, bpp, pix, ss->keep);
+        }
+        z += dz;
+    }
+}
+
+/* Colour channel of a Q16 stepper value with rounding added, clamped 0..255. */
+static inline unsigned channel_of(uint32_t c)
+{
+    uint32_t v = c >> 16;
+    if (v > 255u)
+        v = c >= 0x80000000u ? 0u : 255u;
+    return v;
+}
+
+static void span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                         uint32_t dz, const uint32_t *c, const uint32_t *dc)
+{
+    uint32_t r = c[0], g = c[1], b = c[2];
+    unsigned func = ss->func, bpp = ss->bpp;
+    int32_t i;
+    uint8_t pix[3];
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
+            if (ss->zwrite)
+                zrow[i] = (uint16_t)d;
+            if (bpp != 0) {
+                pack_color((zl_format)ss->format, channel_of(r), channel_of(g), channel_of(b), pix);
+                put_pixel(crow + (size_t)i * bpp, bpp, pix, ss->keep);
+            }
+        }
+        z += dz;
+        r += dc[0];
+        g += dc[1];
+        b += dc[2];
+    }
+}
+
+/* Per-pixel step of a Q20 gradient as a 32-bit stepper of `frac` bits.
+ * Only spans of 2+ pixels step, and there the gradient is bounded by the
+ * value range, so the clamp never bites where it matters. */
+static uint32_t step32(int64_t d, unsigned shift)
+{
+    return (uint32_t)(int32_t)clamp64(zl_floor_shift64(d, shift), -((int64_t)1 << 30), (int64_t)1 << 30);
+}
+
+/* Start value at column x of a Q20 attribute, clamped to [lo, hi]. */
+static int64_t attr_at(const zl_attr *a, int32_t x, int32_t ax, int64_t lo, int64_t hi)
+{
+    return clamp64(a->row + (int64_t)(x - ax) * a->dx, lo, hi);
+}
+
+static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_state *ss, uint8_t *crow,
+                     uint16_t *zrow)
+{
+    int32_t x0 = t->left.x, x1 = t->right.x;
+    const int64_t f16 = 1 << (ZL_ATTR_FRAC - 16);
+    uint32_t z, dz;
+    if (x0 < 0)
+        x0 = 0;
+    if (x1 > ss->width)
+        x1 = ss->width;
+    if (x0 >= x1)
+        return;
+    /* Depth as Q14 in 32 bits, with the rounding half folded in. */
+    z = (uint32_t)zl_floor_shift64(attr_at(&t->z, x0, t->ax, (int64_t)t->zlo * f16, (int64_t)t->zhi * f16),
+                                   ZL_ATTR_FRAC - 14) + (1u << 13);
+    dz = step32(t->z.dx, ZL_ATTR_FRAC - 14);
+    crow = crow ? crow + (size_t)x0 * ss->bpp : NULL;
+    zrow = zrow ? zrow + x0 : NULL;
+    if (g != NULL && ss->gouraud) {
+        uint32_t c[3], dc[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            int64_t v = attr_at(&g->c[k], x0, t->ax, 0, (int64_t)255 << ZL_ATTR_FRAC);
+            c[k] = (uint32_t)zl_floor_shift64(v, ZL_ATTR_FRAC - 16) + (1u << 15);
+            dc[k] = step32(g->c[k].dx, ZL_ATTR_FRAC - 16);
+        }
+        span_gouraud(ss, crow, zrow, x1 - x0, z, dz, c, dc);
+    } else {
+        uint8_t pix[3];
+        pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
+        span_flat(ss, crow, zrow, x1 - x0, z, dz, pix);
+    }
+}
+
+int zl_tri_row(zl_active *t, zl_gouraud *g, const zl_span_state *ss, uint8_t *color_row,
+               uint16_t *depth_row)
+{
+    int k;
+    row_span(t, g, ss, color_row, depth_row);
+    edge_step(&t->left);
+    edge_step(&t->right);
+    t->z.row += t->z.dy;
+    if (g != NULL && ss->gouraud)
+        for (k = 0; k < 3; k++)
+            g->c[k].row += g->c[k].dy;
+    t->row++;
+    if (t->row == t->mid && t->row < t->end) {
+        if (t->lower_is_left)
+            t->left = t->lower;
+        else
+            t->right = t->lower;
+    }
+    return t->row < t->end;
+}
+
+void zl_fill_color_row(uint8_t *row, const zl_span_state *ss, zl_rgb c)
+{
+    uint8_t pix[3];
+    uint16_t i;
+    pack_color((zl_format)ss->format, c.r, c.g, c.b, pix);
+    for (i = 0; i < ss->width; i++)
+        put_pixel(row + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+}
