@@ -36,7 +36,7 @@ void UnityAssertEqualMemory(const void *expected, const void *actual, uint32_t l
 void UnityAssertEqualString(const char *expected, const char *actual, const char *msg, int line);
 void UnityAssertNull(const void *p, int want_null, const char *msg, int line);
 
-#define UNITY_BEGIN() (UnityBegin(__FILE__), 0)
+#define UNITY_BEGIN() UnityBegin(__FILE__)
 #define UNITY_END() UnityEnd()
 #define RUN_TEST(fn) UnityDefaultTestRun(fn, #fn, __LINE__)
 

@@ -1,0 +1,139 @@
+/* Fixed-point arithmetic: rounding, range errors, square roots, sine table. */
+#include "unity.h"
+#include "zline/zline.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static void test_mul_div_round_to_nearest(void)
+{
+    zl_fixed r;
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(6), zl_fx_mul(ZL_FX_INT(2), ZL_FX_INT(3)));
+    TEST_ASSERT_EQUAL_INT(-ZL_FX_INT(6), zl_fx_mul(-ZL_FX_INT(2), ZL_FX_INT(3)));
+    /* 1 raw * 0.5 = 0.5 raw: ties round towards +infinity. */
+    TEST_ASSERT_EQUAL_INT(1, zl_fx_mul(1, ZL_FX_HALF));
+    TEST_ASSERT_EQUAL_INT(0, zl_fx_mul(-1, ZL_FX_HALF));
+    TEST_ASSERT_EQUAL_INT(21845, zl_fx_div(ZL_FX_ONE, ZL_FX_INT(3))); /* 21845.33 */
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_fx_div_checked(ZL_FX_INT(7), ZL_FX_INT(2), &r));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(7) / 2, r);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_fx_div_checked(-ZL_FX_INT(7), -ZL_FX_INT(2), &r));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(7) / 2, r);
+}
+
+static void test_checked_ops_report_range_errors(void)
+{
+    zl_fixed r = 1234;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_fx_mul_checked(ZL_FX_INT(300), ZL_FX_INT(300), &r));
+    TEST_ASSERT_EQUAL_INT(1234, r); /* untouched on error */
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_fx_div_checked(ZL_FX_ONE, 0, &r));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_fx_div_checked(ZL_FX_INT(30000), 1, &r));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_fx_recip_checked(1, &r));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_fx_recip_checked(ZL_FX_INT(4), &r));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_ONE / 4, r);
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_fx_mul_checked(1, 1, NULL));
+}
+
+static void test_isqrt_is_exact_floor(void)
+{
+    uint32_t i;
+    for (i = 0; i < 5000; i++) {
+        uint32_t r = zl_isqrt32(i);
+        TEST_ASSERT_TRUE(r * r <= i && (r + 1) * (r + 1) > i);
+    }
+    TEST_ASSERT_EQUAL_UINT(65535u, zl_isqrt32(0xFFFFFFFFu));
+    TEST_ASSERT_EQUAL_UINT(0xFFFFFFFFu, zl_isqrt64(0xFFFFFFFFFFFFFFFFull));
+    TEST_ASSERT_EQUAL_UINT(3037000499u, zl_isqrt64(9223372036854775807ull));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(3), zl_fx_sqrt(ZL_FX_INT(9)));
+    TEST_ASSERT_EQUAL_INT(92681, zl_fx_sqrt(ZL_FX_INT(2))); /* floor(sqrt(2) * 65536) */
+    TEST_ASSERT_EQUAL_INT(0, zl_fx_sqrt(-5));
+}
+
+/* Reference sine in integers: Taylor series in 64-bit fixed point (Q40),
+ * independent of the table. */
+static int64_t ref_sin_q16(int32_t a)
+{
+    /* x = a * 2 pi / 65536 in Q40; pi in Q40 = 3454217652358 */
+    const int64_t pi_q40 = 3454217652358LL;
+    int64_t x, term, sum;
+    int k;
+    a &= 0xFFFF;
+    if (a >= 32768)
+        return -ref_sin_q16(a - 32768);
+    if (a > 16384)
+        a = 32768 - a;
+    x = (int64_t)a * (pi_q40 / 32768); /* a * 2pi/65536 */
+    term = x;
+    sum = x;
+    for (k = 1; k < 12; k++) {
+        /* term *= -x^2 / ((2k)(2k+1)), in Q40 with 128-bit-free splitting */
+        int64_t x2 = (x >> 20) * (x >> 20); /* Q40 */
+        term = -((term >> 20) * (x2 >> 20)) / ((2 * k) * (2 * k + 1));
+        sum += term;
+    }
+    return (sum + ((int64_t)1 << 23)) >> 24; /* Q40 -> Q16, rounded */
+}
+
+static void test_sine_table_within_one_unit(void)
+{
+    int32_t a;
+    int32_t worst = 0;
+    for (a = -70000; a < 70000; a += 7) {
+        int64_t e = ref_sin_q16(a);
+        int64_t d = zl_sin(a) - e;
+        if (d < 0)
+            d = -d;
+        if (d > worst)
+            worst = (int32_t)d;
+        TEST_ASSERT_INT_WITHIN(2, ref_sin_q16(a + 16384), zl_cos(a));
+    }
+    TEST_ASSERT_LESS_OR_EQUAL(2, worst);
+    TEST_ASSERT_EQUAL_INT(0, zl_sin(0));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_ONE, zl_sin(16384));
+    TEST_ASSERT_EQUAL_INT(-ZL_FX_ONE, zl_sin(49152));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_ONE, zl_cos(0));
+    TEST_ASSERT_EQUAL_INT(16384, zl_angle_from_deg(ZL_FX_INT(90)));
+    TEST_ASSERT_EQUAL_INT(10923, zl_angle_from_deg(ZL_FX_INT(60))); /* 10922.67 */
+}
+
+static void test_matrices(void)
+{
+    zl_mat4 m, r, p;
+    zl_vec3 v = {ZL_FX_INT(1), ZL_FX_INT(2), ZL_FX_INT(3)};
+    zl_vec3 eye = {0, 0, ZL_FX_INT(5)}, target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
+    zl_vec4 o;
+    zl_mat4_rotate_z(&r, 16384); /* 90 degrees: x -> y */
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_transform_point(&r, v, &o));
+    TEST_ASSERT_EQUAL_INT(-ZL_FX_INT(2), o.x);
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(1), o.y);
+    TEST_ASSERT_EQUAL_INT(ZL_FX_ONE, o.w);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_look_at(&m, eye, target, up));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_transform_point(&m, v, &o));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(1), o.x);
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(2), o.y);
+    TEST_ASSERT_EQUAL_INT(-ZL_FX_INT(2), o.z); /* 3 - 5: in front of the camera */
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_mat4_look_at(&m, eye, eye, up));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_mat4_look_at(&m, eye, target, (zl_vec3){0, 0, ZL_FX_ONE}));
+    zl_mat4_translate(&m, v);
+    zl_mat4_scale(&p, (zl_vec3){ZL_FX_INT(2), ZL_FX_INT(2), ZL_FX_INT(2)});
+    zl_mat4_mul(&r, &m, &p); /* scale, then translate */
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_transform_point(&r, v, &o));
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(3), o.x);
+    TEST_ASSERT_EQUAL_INT(ZL_FX_INT(9), o.z);
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_transform_point(&r, (zl_vec3){ZL_FX_MAX, 0, 0}, &o));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_mat4_perspective(&p, 0, ZL_FX_ONE, ZL_FX_ONE, ZL_FX_INT(2)));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_mat4_perspective(&p, 10000, ZL_FX_ONE, ZL_FX_INT(2), ZL_FX_INT(2)));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_mat4_perspective(&p, 10000, 0, ZL_FX_ONE, ZL_FX_INT(2)));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_mat4_ortho(&p, ZL_FX_ONE, ZL_FX_ONE, 0, 1, 0, 1));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_mat4_perspective(NULL, 10000, ZL_FX_ONE, ZL_FX_ONE, ZL_FX_INT(2)));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_mul_div_round_to_nearest);
+    RUN_TEST(test_checked_ops_report_range_errors);
+    RUN_TEST(test_isqrt_is_exact_floor);
+    RUN_TEST(test_sine_table_within_one_unit);
+    RUN_TEST(test_matrices);
+    return UNITY_END();
+}

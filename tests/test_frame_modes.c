@@ -1,0 +1,311 @@
+/*
+ * Scanline and band modes against frame mode: byte-identical colour and
+ * depth for random scenes (meshes, transforms through the near plane,
+ * pixel-space triangles far into the guard band, every depth function and
+ * mask, culling, flat and Gouraud, several meshes with their own state), for
+ * band heights 1 (scanline), 2, 7 and the full height. Plus the frame API's
+ * memory contract: exact sizes, capacity errors before any pixel.
+ */
+#include <string.h>
+
+#include "unity.h"
+#include "zline/zline.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+enum { W = 48, H = 40, NV = 24, NT = 16, NMESH = 3 };
+
+static uint32_t rng = 12345u;
+static uint32_t next_rand(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    return rng;
+}
+static int32_t rand_range(int32_t lo, int32_t hi) /* inclusive */
+{
+    return lo + (int32_t)(next_rand() % (uint32_t)(hi - lo + 1));
+}
+
+typedef struct {
+    zl_fixed pos[NV * 3];
+    uint16_t idx[NT * 3];
+    uint8_t vcol[NV * 3], fcol[NT * 3];
+    zl_mesh mesh;
+    zl_mat4 mvp;
+    int use_mvp;
+    zl_state state;
+} scene_mesh;
+
+static scene_mesh scene[NMESH];
+static uint8_t frame_color[W * H * 3];
+static uint16_t frame_depth[W * H];
+static uint64_t work[(200 * 1024) / 8];
+
+static void random_state(zl_state *s)
+{
+    zl_state_default(s);
+    s->depth_func = (uint8_t)rand_range(0, 7);
+    if (rand_range(0, 2) != 0)
+        s->depth_func = ZL_LESS;
+    s->depth_test = rand_range(0, 5) != 0;
+    s->depth_write = rand_range(0, 5) != 0;
+    s->color_mask = (uint8_t)(rand_range(0, 3) == 0 ? rand_range(0, 7) : 7);
+    s->cull = (uint8_t)rand_range(0, 2);
+    s->front_face = (uint8_t)rand_range(0, 1);
+    s->shading = (uint8_t)rand_range(0, 1);
+    s->light_on = (uint8_t)rand_range(0, 1);
+    s->ambient = (uint8_t)rand_range(0, 255);
+    s->light_dir.x = ZL_FX_ONE / 2;
+    s->light_dir.y = ZL_FX_ONE / 2;
+    s->light_dir.z = 46341; /* ~ unit length */
+}
+
+static void random_mesh(scene_mesh *m)
+{
+    int i;
+    m->use_mvp = rand_range(0, 2) != 0;
+    for (i = 0; i < NV; i++) {
+        if (m->use_mvp) {
+            /* model space around the origin; some vertices behind the camera */
+            m->pos[i * 3] = rand_range(-3 * ZL_FX_ONE, 3 * ZL_FX_ONE);
+            m->pos[i * 3 + 1] = rand_range(-3 * ZL_FX_ONE, 3 * ZL_FX_ONE);
+            m->pos[i * 3 + 2] = rand_range(-4 * ZL_FX_ONE, 4 * ZL_FX_ONE);
+        } else {
+            /* pixel space, sometimes far outside the target */
+            int32_t reach = rand_range(0, 3) == 0 ? 60000 : 80; /* half-pixels */
+            m->pos[i * 3] = rand_range(-reach, reach) * (ZL_FX_ONE / 2) + rand_range(0, 32767);
+            m->pos[i * 3 + 1] = rand_range(-reach, reach) * (ZL_FX_ONE / 2) + rand_range(0, 32767);
+            m->pos[i * 3 + 2] = rand_range(-ZL_FX_ONE / 4, ZL_FX_ONE + ZL_FX_ONE / 4);
+        }
+        m->vcol[i * 3] = (uint8_t)next_rand();
+        m->vcol[i * 3 + 1] = (uint8_t)next_rand();
+        m->vcol[i * 3 + 2] = (uint8_t)next_rand();
+    }
+    for (i = 0; i < NT * 3; i++)
+        m->idx[i] = (uint16_t)rand_range(0, NV - 1);
+    for (i = 0; i < NT * 3; i++)
+        m->fcol[i] = (uint8_t)next_rand();
+    memset(&m->mesh, 0, sizeof m->mesh);
+    m->mesh.positions = m->pos;
+    m->mesh.indices = m->idx;
+    m->mesh.vertex_count = NV;
+    m->mesh.triangle_count = NT;
+    m->mesh.vertex_colors = m->vcol;
+    m->mesh.face_colors = rand_range(0, 1) ? m->fcol : NULL;
+    if (m->use_mvp) {
+        zl_mat4 proj, view, rot;
+        zl_vec3 eye = {rand_range(-ZL_FX_ONE, ZL_FX_ONE), rand_range(-ZL_FX_ONE, ZL_FX_ONE), ZL_FX_INT(3)};
+        zl_vec3 target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_perspective(&proj, rand_range(5000, 20000), ZL_FX_INT(W) / H,
+                                                         ZL_FX_ONE / 10, ZL_FX_INT(rand_range(5, 100))));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_look_at(&view, eye, target, up));
+        zl_mat4_rotate_y(&rot, rand_range(0, 65535));
+        zl_mat4_mul(&view, &view, &rot);
+        zl_mat4_mul(&m->mvp, &proj, &view);
+    }
+    random_state(&m->state);
+}
+
+static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
+{
+    zl_target t;
+    zl_context ctx;
+    int i;
+    memset(&t, 0, sizeof t);
+    t.color = frame_color;
+    t.color_stride = (int32_t)(W * zl_format_bytes(fmt));
+    t.depth = frame_depth;
+    t.depth_stride = W * 2;
+    t.width = W;
+    t.height = H;
+    t.format = (uint8_t)fmt;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, bgz));
+    for (i = 0; i < NMESH; i++) {
+        ctx.state = scene[i].state;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &scene[i].mesh, scene[i].use_mvp ? &scene[i].mvp : NULL));
+    }
+}
+
+static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
+{
+    memset(c, 0, sizeof *c);
+    c->width = W;
+    c->height = H;
+    c->band_rows = band;
+    c->format = (uint8_t)fmt;
+    c->color_buffers = 1;
+    c->gouraud = 1;
+    c->max_meshes = NMESH;
+    c->max_vertices = NV * NMESH;
+    c->max_triangles = NT * NMESH;
+    c->max_active = NT * NMESH * 7;
+}
+
+typedef struct {
+    zl_format fmt;
+    int rows_seen;
+    int mismatches;
+} compare_ctx;
+
+static int compare_band(void *user, const zl_band *b)
+{
+    compare_ctx *c = user;
+    size_t bpp = zl_format_bytes(c->fmt);
+    uint16_t r;
+    for (r = 0; r < b->rows; r++) {
+        const uint8_t *col = (const uint8_t *)b->color + (size_t)r * (size_t)b->color_stride;
+        const uint16_t *dep = (const uint16_t *)(const void *)((const uint8_t *)b->depth + (size_t)r * (size_t)b->depth_stride);
+        size_t y = (size_t)b->first_row + r;
+        if (memcmp(col, frame_color + y * W * bpp, W * bpp) != 0 || memcmp(dep, frame_depth + y * W, W * 2) != 0)
+            c->mismatches++;
+        c->rows_seen++;
+    }
+    return 0;
+}
+
+static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t bgz)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    compare_ctx cc;
+    int i;
+    config_for(&cfg, fmt, band);
+    TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, bgz));
+    for (i = 0; i < NMESH; i++)
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &scene[i].mesh, scene[i].use_mvp ? &scene[i].mvp : NULL,
+                                                       &scene[i].state));
+    cc.fmt = fmt;
+    cc.rows_seen = 0;
+    cc.mismatches = 0;
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, compare_band, &cc));
+    TEST_ASSERT_EQUAL_INT(H, cc.rows_seen);
+    TEST_ASSERT_EQUAL_INT(0, cc.mismatches);
+}
+
+static void test_random_scenes_identical_in_every_band_height(void)
+{
+    static const uint16_t bands[] = {1, 2, 7, H};
+    int scene_no, i;
+    long drawn = 0;
+    for (scene_no = 0; scene_no < 150; scene_no++) {
+        zl_format fmt = (zl_format)rand_range(0, 2);
+        zl_rgb bg = {(uint8_t)next_rand(), (uint8_t)next_rand(), (uint8_t)next_rand()};
+        uint16_t bgz = (uint16_t)(rand_range(0, 1) ? 65535 : rand_range(0, 65535));
+        for (i = 0; i < NMESH; i++)
+            random_mesh(&scene[i]);
+        render_frame_mode(fmt, bg, bgz);
+        for (i = 0; i < W * H; i++)
+            drawn += frame_depth[i] != bgz;
+        for (i = 0; i < (int)(sizeof bands / sizeof bands[0]); i++)
+            render_and_compare(fmt, bands[i], bg, bgz);
+    }
+    /* The scenes must actually draw something for the comparison to mean anything. */
+    TEST_ASSERT_GREATER_THAN(150L * W * H / 20, drawn);
+}
+
+static void test_sizes_are_exact_and_checked(void)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_rgb bg = {0, 0, 0};
+    size_t need;
+    config_for(&cfg, ZL_FORMAT_RGB565, 1);
+    need = zl_frame_bytes(&cfg);
+    TEST_ASSERT_TRUE(need > 0);
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_SIZE, zl_frame_begin(&f, &cfg, work, need - 1, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, need, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_begin(&f, &cfg, (uint8_t *)work + 1, need, bg, 65535));
+    cfg.band_rows = 0;
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_bytes(&cfg));
+    cfg.band_rows = H + 1;
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_bytes(&cfg));
+    config_for(&cfg, (zl_format)9, 1);
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_bytes(&cfg));
+}
+
+static int count_calls(void *user, const zl_band *b)
+{
+    (void)b;
+    ++*(int *)user;
+    return 0;
+}
+
+static void test_capacity_error_before_any_row(void)
+{
+    /* Ten overlapping full-height triangles need ten active records. */
+    static zl_fixed pos[30 * 3];
+    static uint16_t idx[30];
+    zl_mesh m;
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_state st;
+    zl_rgb bg = {0, 0, 0};
+    int i, calls = 0;
+    for (i = 0; i < 10; i++) {
+        zl_fixed x = ZL_FX_INT(i);
+        zl_fixed tri[9] = {x, 0, 0, x + ZL_FX_INT(20), ZL_FX_INT(H / 2), 0, x, ZL_FX_INT(H), 0};
+        memcpy(&pos[i * 9], tri, sizeof tri);
+        idx[i * 3] = (uint16_t)(i * 3);
+        idx[i * 3 + 1] = (uint16_t)(i * 3 + 1);
+        idx[i * 3 + 2] = (uint16_t)(i * 3 + 2);
+    }
+    memset(&m, 0, sizeof m);
+    m.positions = pos;
+    m.indices = idx;
+    m.vertex_count = 30;
+    m.triangle_count = 10;
+    zl_state_default(&st);
+    config_for(&cfg, ZL_FORMAT_RGB565, 1);
+    cfg.max_active = 9;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_render(&f, count_calls, &calls));
+    TEST_ASSERT_EQUAL_INT(0, calls);
+    TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).active);
+    TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).triangles);
+    cfg.max_active = 10;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, count_calls, &calls));
+    TEST_ASSERT_EQUAL_INT(H, calls);
+    /* Gouraud needs a frame sized for it. */
+    cfg.gouraud = 0;
+    st.shading = ZL_SHADE_GOURAUD;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_add_mesh(&f, &m, NULL, &st));
+}
+
+static void test_pull_form_and_double_buffering(void)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_band a, b;
+    zl_rgb bg = {1, 2, 3};
+    config_for(&cfg, ZL_FORMAT_RGB888, 4);
+    cfg.color_buffers = 2;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &a));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &b));
+    TEST_ASSERT_TRUE(a.color != b.color); /* the band being sent is not overwritten */
+    TEST_ASSERT_EQUAL_INT(0, a.first_row);
+    TEST_ASSERT_EQUAL_INT(4, b.first_row);
+    TEST_ASSERT_EQUAL_UINT8(1, ((const uint8_t *)a.color)[0]);
+    while (zl_frame_next_band(&f, &a) == ZL_OK)
+        ;
+    TEST_ASSERT_EQUAL_INT(ZL_DONE, zl_frame_next_band(&f, &a));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_random_scenes_identical_in_every_band_height);
+    RUN_TEST(test_sizes_are_exact_and_checked);
+    RUN_TEST(test_capacity_error_before_any_row);
+    RUN_TEST(test_pull_form_and_double_buffering);
+    return UNITY_END();
+}
