@@ -1,0 +1,23 @@
+#!/bin/sh
+# Every test of zline, as CI runs it:
+#   1. host build (warnings are errors), all unit tests, tools and benchmark checks
+#   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
+#   3. the portable tests cross-compiled for Cortex-M4 and Cortex-M3, run under QEMU
+# Build trees go to build/ci-*. Exit status: non-zero if anything failed.
+set -eu
+cd "$(dirname "$0")/.."
+jobs=${JOBS:-2}
+run() { # run NAME CMAKE-ARGS...
+    name=$1; shift
+    echo "=== $name"
+    cmake -S . -B "build/ci-$name" "$@" >/dev/null
+    cmake --build "build/ci-$name" -j "$jobs" >/dev/null
+    ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs"
+}
+run host -DCMAKE_BUILD_TYPE=Release
+run sanitize -DCMAKE_BUILD_TYPE=Debug -DZLINE_SANITIZE=ON
+for cpu in cortex-m4 cortex-m3; do
+    run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
+        -DZLINE_CPU="$cpu"
+done
+echo "=== all test suites passed"
