@@ -2,7 +2,7 @@
 # Every test of zline, as CI runs it:
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
-#   3. the portable tests cross-compiled for Cortex-M4 and Cortex-M3, run under QEMU
+#   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
 # Build trees go to build/ci-*. Exit status: non-zero if anything failed.
 set -eu
 cd "$(dirname "$0")/.."
@@ -16,7 +16,7 @@ run() { # run NAME CMAKE-ARGS...
 }
 run host -DCMAKE_BUILD_TYPE=Release
 run sanitize -DCMAKE_BUILD_TYPE=Debug -DZLINE_SANITIZE=ON
-for cpu in cortex-m4 cortex-m3; do
+for cpu in cortex-m4 cortex-m3 cortex-m0; do
     run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
         -DZLINE_CPU="$cpu"
 done

@@ -12,6 +12,7 @@
 #ifndef ZLINE_UNITY_SHIM_H
 #define ZLINE_UNITY_SHIM_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
