@@ -1,0 +1,1197 @@
+/*
+ * Wavefront OBJ loader (host port). See zl_obj.h for what is accepted.
+ *
+ * The text is read into memory and scanned three times:
+ *   1. encoding: a UTF-16 byte order mark, NUL bytes or invalid UTF-8 stop
+ *      the load, with the line they are on;
+ *   2. counting: the v, vt and vn statements are counted, so that a face may
+ *      refer to a vertex defined further down and every index is checked
+ *      against the final counts the moment its line is parsed; errors are
+ *      therefore reported at the first bad line, in file order;
+ *   3. parsing: every line is checked and stored (positions in double).
+ * Faces are triangulated at the end (they may refer to later vertices), then
+ * positions are normalised if asked and converted to Q16.16.
+ */
+#include "zl_obj.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <locale.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ utilities */
+
+typedef struct {
+    const char *s;
+    size_t n;
+} token;
+
+/* Longest token quoted in a message. */
+#define QUOTE_MAX 40
+#define QUOTE(t)                                                                                   \
+    (int)((t).n > QUOTE_MAX ? QUOTE_MAX : (t).n), (t).s, ((t).n > QUOTE_MAX ? "..." : "")
+
+typedef struct {
+    size_t first; /* index into parser.poly */
+    size_t count; /* vertices of the face */
+} face_rec;
+
+typedef struct {
+    const char *name;
+    char *msg;
+    size_t msg_size;
+    int normalize;
+    char decimal_point;
+    unsigned long line;
+
+    /* statements counted in the counting pass */
+    size_t v_total, vt_total, vn_total;
+    /* texture coordinates and normals seen so far in the parsing pass */
+    size_t vt_seen, vn_seen;
+
+    double *pos;  /* 3 per vertex, as written in the file */
+    uint8_t *col; /* 3 per vertex */
+    size_t v_count;
+    size_t v_cap, col_cap; /* capacities, in elements (3 per vertex) */
+    size_t colored;        /* vertices that had a colour */
+
+    uint32_t *poly; /* face vertex indices, 0-based, all faces one after another */
+    size_t poly_count, poly_cap;
+    face_rec *faces;
+    size_t face_count, face_cap;
+    size_t tri_total;
+    size_t max_face; /* most vertices in one face */
+} parser;
+
+static zl_obj_status fail(parser *p, zl_obj_status s, const char *fmt, ...)
+{
+    if (p->msg != NULL && p->msg_size > 0) {
+        int n = snprintf(p->msg, p->msg_size, "%s:%lu: ", p->name, p->line);
+        if (n >= 0 && (size_t)n < p->msg_size) {
+            va_list ap;
+            va_start(ap, fmt);
+            vsnprintf(p->msg + n, p->msg_size - (size_t)n, fmt, ap);
+            va_end(ap);
+        }
+    }
+    return s;
+}
+
+/* A message without a line number (I/O and memory). */
+static void set_msg(char *msg, size_t msg_size, const char *fmt, ...)
+{
+    if (msg != NULL && msg_size > 0) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(msg, msg_size, fmt, ap);
+        va_end(ap);
+    }
+}
+
+static zl_obj_status out_of_memory(parser *p)
+{
+    return fail(p, ZL_OBJ_ERR_MEMORY, "out of memory");
+}
+
+/*
+ * Make room for need elements of elem bytes in arr (capacity *cap, doubled
+ * as needed). Returns the array, moved or not, or NULL when memory runs out
+ * (arr is then still valid and *cap unchanged).
+ */
+static void *grow(void *arr, size_t *cap, size_t need, size_t elem)
+{
+    size_t ncap;
+    void *na;
+    if (need <= *cap)
+        return arr;
+    ncap = *cap ? *cap : 64;
+    while (ncap < need) {
+        if (ncap > ((size_t)-1) / 2 / elem)
+            return NULL;
+        ncap *= 2;
+    }
+    na = realloc(arr, ncap * elem);
+    if (na != NULL)
+        *cap = ncap;
+    return na;
+}
+
+/* GROW(array, capacity, need): grow a parser array or fail the load. */
+#define GROW(arr, cap, need)                                                                       \
+    do {                                                                                           \
+        void *grown_ = grow((arr), &(cap), (need), sizeof *(arr));                                 \
+        if (grown_ == NULL)                                                                        \
+            return out_of_memory(p);                                                               \
+        (arr) = grown_;                                                                            \
+    } while (0)
+
+static int is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/* Next whitespace-separated token of [*cur, end); 0 at the end of the line. */
+static int next_token(const char **cur, const char *end, token *t)
+{
+    const char *s = *cur;
+    while (s < end && is_space(*s))
+        s++;
+    if (s == end) {
+        *cur = s;
+        return 0;
+    }
+    t->s = s;
+    while (s < end && !is_space(*s))
+        s++;
+    t->n = (size_t)(s - t->s);
+    *cur = s;
+    return 1;
+}
+
+static int tok_is(token t, const char *word)
+{
+    size_t n = strlen(word);
+    return t.n == n && memcmp(t.s, word, n) == 0;
+}
+
+/*
+ * Next line of buf from *pos: [*line, *line + *len) without its LF, a CR
+ * before it, and any comment. Returns 0 at the end of the buffer.
+ */
+static int next_line(const char *buf, size_t size, size_t *pos, const char **line, size_t *len)
+{
+    const char *start, *nl, *hash;
+    size_t n;
+    if (*pos >= size)
+        return 0;
+    start = buf + *pos;
+    nl = (const char *)memchr(start, '\n', size - *pos);
+    n = nl ? (size_t)(nl - start) : size - *pos;
+    *pos = nl ? (size_t)(nl - buf) + 1 : size;
+    hash = (const char *)memchr(start, '#', n);
+    if (hash != NULL)
+        n = (size_t)(hash - start);
+    *line = start;
+    *len = n;
+    return 1;
+}
+
+/* ------------------------------------------------------------- encoding */
+
+static zl_obj_status check_encoding(parser *p, const unsigned char *b, size_t n, size_t *start)
+{
+    size_t i;
+    *start = 0;
+    p->line = 1;
+    if (n >= 2 && ((b[0] == 0xFF && b[1] == 0xFE) || (b[0] == 0xFE && b[1] == 0xFF)))
+        return fail(p, ZL_OBJ_ERR_PARSE,
+                    "the file starts with a UTF-16 byte order mark; save it as UTF-8 or ASCII");
+    if (n >= 3 && b[0] == 0xEF && b[1] == 0xBB && b[2] == 0xBF)
+        *start = 3; /* UTF-8 byte order mark */
+    i = *start;
+    while (i < n) {
+        unsigned c = b[i];
+        size_t len, k;
+        unsigned lo = 0x80, hi = 0xBF; /* allowed range of the second byte */
+        if (c == '\n') {
+            p->line++;
+            i++;
+            continue;
+        }
+        if (c == 0)
+            return fail(p, ZL_OBJ_ERR_PARSE,
+                        "NUL byte: this is a binary or UTF-16 file, not ASCII or UTF-8 OBJ text");
+        if (c < 0x80) {
+            i++;
+            continue;
+        }
+        if (c >= 0xC2 && c <= 0xDF) {
+            len = 2;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            len = 3;
+            if (c == 0xE0)
+                lo = 0xA0; /* no overlong forms */
+            if (c == 0xED)
+                hi = 0x9F; /* no surrogates */
+        } else if (c >= 0xF0 && c <= 0xF4) {
+            len = 4;
+            if (c == 0xF0)
+                lo = 0x90;
+            if (c == 0xF4)
+                hi = 0x8F; /* nothing above U+10FFFF */
+        } else {
+            return fail(p, ZL_OBJ_ERR_PARSE,
+                        "invalid UTF-8 byte 0x%02X: the file must be ASCII or UTF-8", c);
+        }
+        for (k = 1; k < len; k++) {
+            unsigned d = i + k < n ? b[i + k] : 0;
+            unsigned dlo = k == 1 ? lo : 0x80, dhi = k == 1 ? hi : 0xBF;
+            if (i + k >= n || d < dlo || d > dhi)
+                return fail(
+                    p, ZL_OBJ_ERR_PARSE,
+                    "invalid UTF-8 sequence at byte 0x%02X: the file must be ASCII or UTF-8", c);
+        }
+        i += len;
+    }
+    return ZL_OBJ_OK;
+}
+
+/* -------------------------------------------------------------- numbers */
+
+/* [+-]? (digits [. digits?] | . digits) ([eE] [+-]? digits)? */
+static int is_decimal(token t)
+{
+    size_t i = 0, int_digits = 0, frac_digits = 0;
+    if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
+        i++;
+    while (i < t.n && is_digit(t.s[i])) {
+        i++;
+        int_digits++;
+    }
+    if (i < t.n && t.s[i] == '.') {
+        i++;
+        while (i < t.n && is_digit(t.s[i])) {
+            i++;
+            frac_digits++;
+        }
+    }
+    if (int_digits + frac_digits == 0)
+        return 0;
+    if (i < t.n && (t.s[i] == 'e' || t.s[i] == 'E')) {
+        size_t exp_digits = 0;
+        i++;
+        if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
+            i++;
+        while (i < t.n && is_digit(t.s[i])) {
+            i++;
+            exp_digits++;
+        }
+        if (exp_digits == 0)
+            return 0;
+    }
+    return i == t.n;
+}
+
+static char lower(char c)
+{
+    return (c >= 'A' && c <= 'Z') ? (char)(c - 'A' + 'a') : c;
+}
+
+/* nan, inf, infinity (any case, optional sign, nan(...)): what strtod would
+ * take for a non-finite value. */
+static int is_nonfinite_word(token t)
+{
+    size_t i = 0;
+    if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
+        i++;
+    if (t.n - i >= 3) {
+        char a = lower(t.s[i]), b = lower(t.s[i + 1]), c = lower(t.s[i + 2]);
+        if ((a == 'n' && b == 'a' && c == 'n') || (a == 'i' && b == 'n' && c == 'f'))
+            return 1;
+    }
+    return 0;
+}
+
+/* Parse a decimal number; the error messages name the token. */
+static zl_obj_status parse_number(parser *p, token t, double *out)
+{
+    char buf[128];
+    char *end;
+    size_t i;
+    double v;
+    if (!is_decimal(t)) {
+        if (is_nonfinite_word(t))
+            return fail(p, ZL_OBJ_ERR_PARSE, "'%.*s%s' is not a finite number", QUOTE(t));
+        return fail(p, ZL_OBJ_ERR_PARSE, "'%.*s%s' is not a number", QUOTE(t));
+    }
+    if (t.n >= sizeof buf)
+        return fail(p, ZL_OBJ_ERR_PARSE, "number '%.*s%s' is longer than %u characters", QUOTE(t),
+                    (unsigned)(sizeof buf - 1));
+    /* strtod reads the locale's decimal point: give it that one. */
+    for (i = 0; i < t.n; i++)
+        buf[i] = t.s[i] == '.' ? p->decimal_point : t.s[i];
+    buf[t.n] = '\0';
+    errno = 0;
+    v = strtod(buf, &end);
+    if (end != buf + t.n)
+        return fail(p, ZL_OBJ_ERR_PARSE, "'%.*s%s' is not a number", QUOTE(t));
+    if (!isfinite(v))
+        return fail(p, ZL_OBJ_ERR_PARSE, "'%.*s%s' is out of the range of a double", QUOTE(t));
+    *out = v;
+    return ZL_OBJ_OK;
+}
+
+/*
+ * Parse a face index: [+-]? digits. Returns 1 and the value, saturated at
+ * +-10^18 (far beyond any count), or 0 for a syntax error.
+ */
+static int parse_int(const char *s, size_t n, long long *out)
+{
+    size_t i = 0;
+    int neg = 0;
+    long long v = 0;
+    const long long cap = 1000000000000000000LL;
+    if (i < n && (s[i] == '+' || s[i] == '-')) {
+        neg = s[i] == '-';
+        i++;
+    }
+    if (i == n)
+        return 0;
+    for (; i < n; i++) {
+        if (!is_digit(s[i]))
+            return 0;
+        if (v <= cap / 10)
+            v = v * 10 + (s[i] - '0'); /* at most 10^18 + 9: no overflow */
+        else
+            v = cap;
+    }
+    if (v > cap)
+        v = cap;
+    *out = neg ? -v : v;
+    return 1;
+}
+
+/* --------------------------------------------------------- the statements */
+
+/* Statements of the OBJ format that a triangle mesh loader ignores. */
+static const char *const ignored_statements[] = {
+    "g",      "o",          "s",         "usemtl",   "mtllib",   "l",    "p",
+    "vp",     "cstype",     "deg",       "bmat",     "step",     "curv", "curv2",
+    "surf",   "parm",       "trim",      "hole",     "scrv",     "sp",   "end",
+    "con",    "mg",         "bevel",     "c_interp", "d_interp", "lod",  "usemap",
+    "maplib", "shadow_obj", "trace_obj", "ctech",    "stech",    NULL};
+
+static int is_ignored(token t)
+{
+    size_t i;
+    for (i = 0; ignored_statements[i] != NULL; i++)
+        if (tok_is(t, ignored_statements[i]))
+            return 1;
+    return 0;
+}
+
+static zl_obj_status parse_vertex(parser *p, const char *cur, const char *end)
+{
+    double val[7];
+    token t;
+    size_t k = 0, i;
+    zl_obj_status st;
+    while (next_token(&cur, end, &t)) {
+        double v;
+        if (k >= 3 && !is_decimal(t) && !is_nonfinite_word(t))
+            return fail(p, ZL_OBJ_ERR_PARSE, "unexpected '%.*s%s' after the vertex coordinates",
+                        QUOTE(t));
+        st = parse_number(p, t, &v);
+        if (st != ZL_OBJ_OK)
+            return st;
+        if (k < 7)
+            val[k] = v;
+        k++;
+    }
+    if (k < 3)
+        return fail(p, ZL_OBJ_ERR_PARSE, "a vertex needs x y z; this one has %u number%s",
+                    (unsigned)k, k == 1 ? "" : "s");
+    if (k == 5 || k > 6)
+        return fail(p, ZL_OBJ_ERR_PARSE,
+                    "a vertex is x y z, x y z w or x y z r g b; this one has %lu numbers",
+                    (unsigned long)k);
+    if (p->v_count >= ZL_OBJ_MAX_VERTICES)
+        return fail(p, ZL_OBJ_ERR_LIMIT,
+                    "more than %u vertices: a zl_mesh indexes its vertices with uint16",
+                    ZL_OBJ_MAX_VERTICES);
+    if (!p->normalize) {
+        for (i = 0; i < 3; i++) {
+            double r = floor(val[i] * 65536.0 + 0.5);
+            if (r < (double)INT32_MIN || r > (double)INT32_MAX)
+                return fail(p, ZL_OBJ_ERR_PARSE,
+                            "coordinate %g is outside the Q16.16 range -32768 .. 32767.99998 "
+                            "(normalise the model)",
+                            val[i]);
+        }
+    }
+    GROW(p->pos, p->v_cap, 3 * (p->v_count + 1));
+    GROW(p->col, p->col_cap, 3 * (p->v_count + 1));
+    for (i = 0; i < 3; i++)
+        p->pos[p->v_count * 3 + i] = val[i];
+    if (k == 6) {
+        for (i = 0; i < 3; i++) {
+            double c = val[3 + i];
+            c = c < 0.0 ? 0.0 : (c > 1.0 ? 1.0 : c);
+            p->col[p->v_count * 3 + i] = (uint8_t)floor(c * 255.0 + 0.5);
+        }
+        p->colored++;
+    } else {
+        memset(p->col + p->v_count * 3, 0, 3);
+    }
+    p->v_count++;
+    return ZL_OBJ_OK;
+}
+
+/* vt (1 to 3 numbers) and vn (3 numbers): checked, counted, not kept. */
+static zl_obj_status parse_attribute(parser *p, const char *cur, const char *end, int normal)
+{
+    token t;
+    size_t k = 0;
+    zl_obj_status st;
+    while (next_token(&cur, end, &t)) {
+        double v;
+        st = parse_number(p, t, &v);
+        if (st != ZL_OBJ_OK)
+            return st;
+        k++;
+    }
+    if (normal && k != 3)
+        return fail(p, ZL_OBJ_ERR_PARSE, "a normal (vn) has 3 numbers; this one has %lu",
+                    (unsigned long)k);
+    if (!normal && (k < 1 || k > 3))
+        return fail(p, ZL_OBJ_ERR_PARSE,
+                    "a texture coordinate (vt) has 1 to 3 numbers; this one has %lu",
+                    (unsigned long)k);
+    if (normal)
+        p->vn_seen++;
+    else
+        p->vt_seen++;
+    return ZL_OBJ_OK;
+}
+
+/*
+ * Resolve one index of a face vertex against `seen` items defined before
+ * this line and `total` in the file. what/whats: singular and plural name.
+ */
+static zl_obj_status resolve_index(parser *p, token whole, const char *s, size_t n, size_t seen,
+                                   size_t total, const char *what, const char *whats, size_t *out)
+{
+    long long v;
+    if (!parse_int(s, n, &v))
+        return fail(p, ZL_OBJ_ERR_PARSE,
+                    "'%.*s%s' is not a face vertex: expected v, v/vt, v//vn or v/vt/vn with "
+                    "integer indices",
+                    QUOTE(whole));
+    if (v == 0)
+        return fail(p, ZL_OBJ_ERR_PARSE, "%s index 0 in '%.*s%s': OBJ indices start at 1", what,
+                    QUOTE(whole));
+    if (v > 0) {
+        if ((unsigned long long)v > (unsigned long long)total)
+            return fail(p, ZL_OBJ_ERR_PARSE,
+                        "%s index %.*s in '%.*s%s' is out of range: the file has %lu %s", what,
+                        (int)n, s, QUOTE(whole), (unsigned long)total, total == 1 ? what : whats);
+        *out = (size_t)(v - 1);
+    } else {
+        if ((unsigned long long)(-v) > (unsigned long long)seen)
+            return fail(p, ZL_OBJ_ERR_PARSE,
+                        "relative %s index %.*s in '%.*s%s' is out of range: %lu %s defined "
+                        "before this line",
+                        what, (int)n, s, QUOTE(whole), (unsigned long)seen,
+                        seen == 1 ? what : whats);
+        *out = seen - (size_t)(-v);
+    }
+    return ZL_OBJ_OK;
+}
+
+static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
+{
+    token t;
+    size_t n = 0, first = p->poly_count;
+    zl_obj_status st;
+    while (next_token(&cur, end, &t)) {
+        const char *part[3];
+        size_t plen[3], parts = 1, i;
+        size_t idx;
+        part[0] = t.s;
+        plen[0] = 0;
+        for (i = 0; i < t.n; i++) {
+            if (t.s[i] == '/') {
+                if (parts == 3)
+                    return fail(p, ZL_OBJ_ERR_PARSE,
+                                "'%.*s%s' is not a face vertex: expected v, v/vt, v//vn or "
+                                "v/vt/vn",
+                                QUOTE(t));
+                part[parts] = t.s + i + 1;
+                plen[parts] = 0;
+                parts++;
+            } else {
+                plen[parts - 1]++;
+            }
+        }
+        /* v/ and v/vt/ and v// have an empty part that must not be */
+        if (plen[0] == 0 || (parts == 2 && plen[1] == 0) || (parts == 3 && plen[2] == 0))
+            return fail(p, ZL_OBJ_ERR_PARSE,
+                        "'%.*s%s' is not a face vertex: expected v, v/vt, v//vn or v/vt/vn",
+                        QUOTE(t));
+        st = resolve_index(p, t, part[0], plen[0], p->v_count, p->v_total, "vertex", "vertices",
+                           &idx);
+        if (st != ZL_OBJ_OK)
+            return st;
+        if (parts >= 2 && plen[1] > 0) {
+            size_t unused;
+            st = resolve_index(p, t, part[1], plen[1], p->vt_seen, p->vt_total,
+                               "texture coordinate", "texture coordinates", &unused);
+            if (st != ZL_OBJ_OK)
+                return st;
+        }
+        if (parts == 3) {
+            size_t unused;
+            st = resolve_index(p, t, part[2], plen[2], p->vn_seen, p->vn_total, "normal", "normals",
+                               &unused);
+            if (st != ZL_OBJ_OK)
+                return st;
+        }
+        GROW(p->poly, p->poly_cap, p->poly_count + 1);
+        p->poly[p->poly_count++] = (uint32_t)idx;
+        n++;
+    }
+    if (n < 3)
+        return fail(p, ZL_OBJ_ERR_PARSE, "a face needs at least 3 vertices; this one has %lu",
+                    (unsigned long)n);
+    if (n - 2 > ZL_OBJ_MAX_TRIANGLES - p->tri_total)
+        return fail(p, ZL_OBJ_ERR_LIMIT,
+                    "more than %u triangles (a zl_mesh counts them in uint16): this face of %lu "
+                    "vertices makes %lu",
+                    ZL_OBJ_MAX_TRIANGLES, (unsigned long)n, (unsigned long)(p->tri_total + n - 2));
+    GROW(p->faces, p->face_cap, p->face_count + 1);
+    p->faces[p->face_count].first = first;
+    p->faces[p->face_count].count = n;
+    p->face_count++;
+    p->tri_total += n - 2;
+    if (n > p->max_face)
+        p->max_face = n;
+    return ZL_OBJ_OK;
+}
+
+/* ---------------------------------------------------------- triangulation */
+
+typedef struct {
+    uint32_t code;
+    size_t v;
+} zkey;
+
+typedef struct {
+    double *x, *y;       /* the outline in its plane, counter-clockwise */
+    size_t *prev, *next; /* the vertices not clipped yet, as a ring */
+    /* Only reflex (or flat) vertices can block an ear. Small outlines keep
+     * them in a list; large ones (more than ZORDER_MIN vertices) keep every
+     * vertex in a list sorted by Morton (z-order) code, so an ear test only
+     * visits the vertices whose codes lie in its bounding box's range. */
+    unsigned char *reflex;
+    size_t *rprev, *rnext;
+    size_t rhead; /* first reflex vertex, NONE when there is none */
+    int zmode;
+    uint32_t *z;
+    size_t *zprev, *znext;
+    zkey *keys;
+    double zminx, zminy, zscale;
+} ear_work;
+
+#define NONE ((size_t)-1)
+#define ZORDER_MIN 64
+
+/* Vertex visits allowed per face before the ear test stops looking for
+ * blockers (only huge self-intersecting outlines get near it; the z-order
+ * index keeps honest polygons of 65535 vertices far below it). */
+#define EAR_BUDGET 200000000L
+
+/* Twice the signed area of (a, b, c): > 0 when counter-clockwise. */
+static double cross3(const ear_work *w, size_t a, size_t b, size_t c)
+{
+    return (w->x[b] - w->x[a]) * (w->y[c] - w->y[a]) - (w->y[b] - w->y[a]) * (w->x[c] - w->x[a]);
+}
+
+static double corner(const ear_work *w, size_t v)
+{
+    return cross3(w, w->prev[v], v, w->next[v]);
+}
+
+static int same_point(const ear_work *w, size_t a, size_t b)
+{
+    return w->x[a] == w->x[b] && w->y[a] == w->y[b];
+}
+
+static void reflex_remove(ear_work *w, size_t v)
+{
+    if (!w->reflex[v])
+        return;
+    w->reflex[v] = 0;
+    if (w->zmode)
+        return; /* no list: the flag is all */
+    if (w->rprev[v] != NONE)
+        w->rnext[w->rprev[v]] = w->rnext[v];
+    else
+        w->rhead = w->rnext[v];
+    if (w->rnext[v] != NONE)
+        w->rprev[w->rnext[v]] = w->rprev[v];
+}
+
+static void reflex_insert(ear_work *w, size_t v)
+{
+    if (w->reflex[v])
+        return;
+    w->reflex[v] = 1;
+    if (w->zmode)
+        return;
+    w->rprev[v] = NONE;
+    w->rnext[v] = w->rhead;
+    if (w->rhead != NONE)
+        w->rprev[w->rhead] = v;
+    w->rhead = v;
+}
+
+/* Bring v's reflex flag up to date with its current neighbours. */
+static void reflex_update(ear_work *w, size_t v)
+{
+    if (corner(w, v) <= 0.0)
+        reflex_insert(w, v);
+    else
+        reflex_remove(w, v);
+}
+
+/* 15 bits of x spread to the even bits. */
+static uint32_t spread15(uint32_t x)
+{
+    x &= 0x7FFFu;
+    x = (x | (x << 8)) & 0x00FF00FFu;
+    x = (x | (x << 4)) & 0x0F0F0F0Fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
+}
+
+static uint32_t quantise(double v)
+{
+    /* monotonic in v, so a bounding box maps onto a range of codes */
+    return v <= 0.0 ? 0u : (v >= 32767.0 ? 32767u : (uint32_t)v);
+}
+
+static uint32_t zcode(const ear_work *w, double x, double y)
+{
+    return spread15(quantise((x - w->zminx) * w->zscale)) |
+           spread15(quantise((y - w->zminy) * w->zscale)) << 1;
+}
+
+static int zkey_cmp(const void *pa, const void *pb)
+{
+    const zkey *a = (const zkey *)pa, *b = (const zkey *)pb;
+    if (a->code != b->code)
+        return a->code < b->code ? -1 : 1;
+    return a->v < b->v ? -1 : (a->v > b->v ? 1 : 0);
+}
+
+/* Sort the n vertices into the z-order list. */
+static void zorder_build(ear_work *w, size_t n)
+{
+    double minx = w->x[0], maxx = w->x[0], miny = w->y[0], maxy = w->y[0], ext;
+    size_t i;
+    for (i = 1; i < n; i++) {
+        minx = fmin(minx, w->x[i]);
+        maxx = fmax(maxx, w->x[i]);
+        miny = fmin(miny, w->y[i]);
+        maxy = fmax(maxy, w->y[i]);
+    }
+    ext = fmax(maxx - minx, maxy - miny);
+    w->zminx = minx;
+    w->zminy = miny;
+    w->zscale = ext > 0.0 ? 32767.0 / ext : 0.0;
+    for (i = 0; i < n; i++) {
+        w->z[i] = zcode(w, w->x[i], w->y[i]);
+        w->keys[i].code = w->z[i];
+        w->keys[i].v = i;
+    }
+    qsort(w->keys, n, sizeof(zkey), zkey_cmp);
+    for (i = 0; i < n; i++) {
+        size_t v = w->keys[i].v;
+        w->zprev[v] = i > 0 ? w->keys[i - 1].v : NONE;
+        w->znext[v] = i + 1 < n ? w->keys[i + 1].v : NONE;
+    }
+}
+
+/* Does reflex vertex v block the ear (a, b, c) with bounding box bb? */
+static int blocks(const ear_work *w, size_t v, size_t a, size_t b, size_t c, const double *bb)
+{
+    double px = w->x[v], py = w->y[v];
+    if (!w->reflex[v] || v == a || v == c || px < bb[0] || px > bb[1] || py < bb[2] || py > bb[3])
+        return 0;
+    /* Points of the ear itself, repeated elsewhere in the outline (the seam
+     * to a hole), touch the ear without blocking it. */
+    if (same_point(w, v, a) || same_point(w, v, b) || same_point(w, v, c))
+        return 0;
+    /* inside or on an edge */
+    return cross3(w, a, b, v) >= 0.0 && cross3(w, b, c, v) >= 0.0 && cross3(w, c, a, v) >= 0.0;
+}
+
+/* Is b, between a and c, an ear of the (counter-clockwise) outline? */
+static int is_ear(const ear_work *w, size_t a, size_t b, size_t c, long *budget)
+{
+    size_t v;
+    double bb[4];
+    if (cross3(w, a, b, c) <= 0.0)
+        return 0; /* reflex or flat */
+    if (*budget <= 0)
+        return 1;
+    bb[0] = fmin(w->x[a], fmin(w->x[b], w->x[c]));
+    bb[1] = fmax(w->x[a], fmax(w->x[b], w->x[c]));
+    bb[2] = fmin(w->y[a], fmin(w->y[b], w->y[c]));
+    bb[3] = fmax(w->y[a], fmax(w->y[b], w->y[c]));
+    /* Only a reflex (or flat) vertex can block: if any vertex lies in the
+     * triangle, the one farthest from the diagonal ac does, and it is reflex. */
+    if (w->zmode) {
+        uint32_t zlo = zcode(w, bb[0], bb[2]), zhi = zcode(w, bb[1], bb[3]);
+        for (v = w->zprev[b]; v != NONE && w->z[v] >= zlo; v = w->zprev[v]) {
+            (*budget)--;
+            if (blocks(w, v, a, b, c, bb))
+                return 0;
+        }
+        for (v = w->znext[b]; v != NONE && w->z[v] <= zhi; v = w->znext[v]) {
+            (*budget)--;
+            if (blocks(w, v, a, b, c, bb))
+                return 0;
+        }
+        return 1;
+    }
+    for (v = w->rhead; v != NONE; v = w->rnext[v]) {
+        (*budget)--;
+        if (blocks(w, v, a, b, c, bb))
+            return 0;
+    }
+    return 1;
+}
+
+/* Remove v from the outline; its neighbours' corners change. */
+static void clip_vertex(ear_work *w, size_t v)
+{
+    size_t a = w->prev[v], c = w->next[v];
+    w->next[a] = c;
+    w->prev[c] = a;
+    reflex_remove(w, v);
+    if (w->zmode) {
+        if (w->zprev[v] != NONE)
+            w->znext[w->zprev[v]] = w->znext[v];
+        if (w->znext[v] != NONE)
+            w->zprev[w->znext[v]] = w->zprev[v];
+    }
+    reflex_update(w, a);
+    reflex_update(w, c);
+}
+
+/*
+ * Triangulate the face poly[0..n-1] (0-based vertex indices into pos) into
+ * out[0 .. 3 (n - 2) - 1], wound like the face.
+ */
+static void triangulate(const double *pos, const uint32_t *poly, size_t n, ear_work *w,
+                        uint16_t *out)
+{
+    double nrm[3] = {0.0, 0.0, 0.0};
+    size_t i, k, u, v, remaining, cur, stall, emitted = 0;
+    long budget = EAR_BUDGET;
+    double flip;
+
+#define EMIT(a, b, c)                                                                              \
+    do {                                                                                           \
+        out[3 * emitted + 0] = (uint16_t)poly[a];                                                  \
+        out[3 * emitted + 1] = (uint16_t)poly[b];                                                  \
+        out[3 * emitted + 2] = (uint16_t)poly[c];                                                  \
+        emitted++;                                                                                 \
+    } while (0)
+
+    if (n == 3) {
+        EMIT(0, 1, 2);
+        return;
+    }
+    /* Newell normal: robust for concave and slightly non-planar polygons. */
+    for (i = 0; i < n; i++) {
+        const double *p = pos + 3 * (size_t)poly[i];
+        const double *q = pos + 3 * (size_t)poly[(i + 1) % n];
+        nrm[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        nrm[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        nrm[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    /* Drop the dominant axis k; (u, v) = the next two axes in cyclic order,
+     * in which the polygon's signed area is nrm[k] / 2. */
+    k = 0;
+    if (fabs(nrm[1]) > fabs(nrm[k]))
+        k = 1;
+    if (fabs(nrm[2]) > fabs(nrm[k]))
+        k = 2;
+    u = (k + 1) % 3;
+    v = (k + 2) % 3;
+    flip = nrm[k] < 0.0 ? -1.0 : 1.0; /* mirror clockwise outlines to counter-clockwise */
+    {
+        const double *o = pos + 3 * (size_t)poly[0];
+        for (i = 0; i < n; i++) {
+            const double *p = pos + 3 * (size_t)poly[i];
+            w->x[i] = p[u] - o[u];
+            w->y[i] = (p[v] - o[v]) * flip;
+            w->prev[i] = (i + n - 1) % n;
+            w->next[i] = (i + 1) % n;
+            w->reflex[i] = 0;
+        }
+    }
+    w->rhead = NONE;
+    w->zmode = n > ZORDER_MIN;
+    if (w->zmode)
+        zorder_build(w, n);
+    for (i = n; i-- > 0;)
+        if (corner(w, i) <= 0.0)
+            reflex_insert(w, i);
+
+    remaining = n;
+    cur = 0;
+    stall = 0;
+    while (remaining > 3) {
+        size_t a = w->prev[cur], c = w->next[cur];
+        if (is_ear(w, a, cur, c, &budget)) {
+            EMIT(a, cur, c);
+            clip_vertex(w, cur);
+            remaining--;
+            stall = 0;
+            cur = w->next[c]; /* step past c: fewer slivers */
+            continue;
+        }
+        cur = c;
+        if (++stall < remaining)
+            continue;
+        /*
+         * A full turn without an ear: the outline is degenerate. First drop
+         * every flat vertex (collinear, a spike, a repeated point) as a
+         * zero-area triangle; if there is none, clip a convex vertex even
+         * though something blocks it, or else any vertex. Each turn clips at
+         * least one vertex, so the loop ends.
+         */
+        {
+            size_t count = remaining, j, vtx = cur, removed = 0;
+            for (j = 0; j < count && remaining > 3; j++) {
+                size_t nxt = w->next[vtx];
+                if (corner(w, vtx) == 0.0) {
+                    EMIT(w->prev[vtx], vtx, w->next[vtx]);
+                    clip_vertex(w, vtx);
+                    remaining--;
+                    removed++;
+                }
+                vtx = nxt;
+            }
+            if (removed == 0) {
+                size_t pick = cur;
+                vtx = cur;
+                for (j = 0; j < remaining; j++) {
+                    if (corner(w, vtx) > 0.0) {
+                        pick = vtx;
+                        break;
+                    }
+                    vtx = w->next[vtx];
+                }
+                EMIT(w->prev[pick], pick, w->next[pick]);
+                vtx = w->next[pick];
+                clip_vertex(w, pick);
+                remaining--;
+            }
+            cur = vtx;
+            stall = 0;
+        }
+    }
+    EMIT(w->prev[cur], cur, w->next[cur]);
+#undef EMIT
+}
+
+/* ------------------------------------------------------------- the loader */
+
+void zl_obj_options_default(zl_obj_options *opt)
+{
+    if (opt != NULL)
+        opt->normalize = 0;
+}
+
+static void parser_free(parser *p)
+{
+    free(p->pos);
+    free(p->col);
+    free(p->poly);
+    free(p->faces);
+}
+
+static zl_obj_status parse_text(parser *p, const char *buf, size_t size)
+{
+    size_t pos, start;
+    const char *line;
+    size_t len, i;
+    zl_obj_status st;
+
+    st = check_encoding(p, (const unsigned char *)buf, size, &start);
+    if (st != ZL_OBJ_OK)
+        return st;
+
+    /* Counting pass. */
+    for (pos = start; next_line(buf, size, &pos, &line, &len);) {
+        const char *cur = line;
+        token t;
+        if (!next_token(&cur, line + len, &t))
+            continue;
+        if (tok_is(t, "v"))
+            p->v_total++;
+        else if (tok_is(t, "vt"))
+            p->vt_total++;
+        else if (tok_is(t, "vn"))
+            p->vn_total++;
+    }
+
+    /* Parsing pass. */
+    p->line = 0;
+    for (pos = start; next_line(buf, size, &pos, &line, &len);) {
+        const char *cur = line, *end = line + len;
+        token t;
+        p->line++;
+        if (!next_token(&cur, end, &t))
+            continue; /* blank or a comment */
+        if (tok_is(t, "v"))
+            st = parse_vertex(p, cur, end);
+        else if (tok_is(t, "f"))
+            st = parse_face(p, cur, end);
+        else if (tok_is(t, "vt"))
+            st = parse_attribute(p, cur, end, 0);
+        else if (tok_is(t, "vn"))
+            st = parse_attribute(p, cur, end, 1);
+        else if (is_ignored(t))
+            st = ZL_OBJ_OK;
+        else
+            st = fail(p, ZL_OBJ_ERR_PARSE, "unknown statement '%.*s%s'", QUOTE(t));
+        if (st != ZL_OBJ_OK)
+            return st;
+    }
+    if (p->face_count == 0) {
+        /* Nothing but white space: empty. Else (comments, vertices): no faces,
+         * reported at the last line. */
+        for (i = start; i < size && (is_space(buf[i]) || buf[i] == '\n'); i++)
+            ;
+        if (i == size) {
+            p->line = 1;
+            return fail(p, ZL_OBJ_ERR_PARSE, "the file is empty");
+        }
+        return fail(p, ZL_OBJ_ERR_PARSE, "no faces (f lines) in the file");
+    }
+    return ZL_OBJ_OK;
+}
+
+static void ear_work_free(ear_work *w)
+{
+    free(w->x);
+    free(w->y);
+    free(w->prev);
+    free(w->next);
+    free(w->rprev);
+    free(w->rnext);
+    free(w->reflex);
+    free(w->z);
+    free(w->zprev);
+    free(w->znext);
+    free(w->keys);
+}
+
+/* Move the parsed data into *obj: normalise, convert, triangulate. */
+static zl_obj_status build(parser *p, zl_obj *obj)
+{
+    size_t i, j, t = 0;
+    ear_work w;
+    double scale = 1.0, center[3] = {0.0, 0.0, 0.0};
+
+    memset(&w, 0, sizeof w);
+    obj->positions = (zl_fixed *)malloc(p->v_count * 3 * sizeof(zl_fixed) + 1);
+    obj->indices = (uint16_t *)malloc(p->tri_total * 3 * sizeof(uint16_t) + 1);
+    w.x = (double *)malloc(p->max_face * sizeof(double));
+    w.y = (double *)malloc(p->max_face * sizeof(double));
+    w.prev = (size_t *)malloc(p->max_face * sizeof(size_t));
+    w.next = (size_t *)malloc(p->max_face * sizeof(size_t));
+    w.rprev = (size_t *)malloc(p->max_face * sizeof(size_t));
+    w.rnext = (size_t *)malloc(p->max_face * sizeof(size_t));
+    w.reflex = (unsigned char *)malloc(p->max_face);
+    if (p->max_face > ZORDER_MIN) {
+        w.z = (uint32_t *)malloc(p->max_face * sizeof(uint32_t));
+        w.zprev = (size_t *)malloc(p->max_face * sizeof(size_t));
+        w.znext = (size_t *)malloc(p->max_face * sizeof(size_t));
+        w.keys = (zkey *)malloc(p->max_face * sizeof(zkey));
+    }
+    if (obj->positions == NULL || obj->indices == NULL || w.x == NULL || w.y == NULL ||
+        w.prev == NULL || w.next == NULL || w.rprev == NULL || w.rnext == NULL ||
+        w.reflex == NULL ||
+        (p->max_face > ZORDER_MIN &&
+         (w.z == NULL || w.zprev == NULL || w.znext == NULL || w.keys == NULL))) {
+        ear_work_free(&w);
+        return out_of_memory(p);
+    }
+
+    for (j = 0; j < 3; j++) {
+        obj->bbox_min[j] = p->v_count ? p->pos[j] : 0.0;
+        obj->bbox_max[j] = obj->bbox_min[j];
+    }
+    for (i = 0; i < p->v_count; i++)
+        for (j = 0; j < 3; j++) {
+            double c = p->pos[3 * i + j];
+            if (c < obj->bbox_min[j])
+                obj->bbox_min[j] = c;
+            if (c > obj->bbox_max[j])
+                obj->bbox_max[j] = c;
+        }
+    if (p->normalize) {
+        double extent = 0.0;
+        for (j = 0; j < 3; j++) {
+            double e = obj->bbox_max[j] - obj->bbox_min[j];
+            center[j] = 0.5 * (obj->bbox_min[j] + obj->bbox_max[j]);
+            if (e > extent)
+                extent = e;
+        }
+        /* A single point stays a point, at the origin. */
+        scale = extent > 0.0 ? 2.0 / extent : 1.0;
+    }
+    for (j = 0; j < 3; j++)
+        obj->center[j] = center[j];
+    obj->scale = scale;
+    for (i = 0; i < 3 * p->v_count; i++) {
+        double c = (p->pos[i] - center[i % 3]) * scale;
+        /* Range checked while parsing (or |c| <= 1 after normalising). */
+        obj->positions[i] = (zl_fixed)floor(c * 65536.0 + 0.5);
+    }
+
+    for (i = 0; i < p->face_count; i++) {
+        const face_rec *f = &p->faces[i];
+        triangulate(p->pos, p->poly + f->first, f->count, &w, obj->indices + 3 * t);
+        t += f->count - 2;
+    }
+    ear_work_free(&w);
+
+    if (p->colored == p->v_count && p->v_count > 0) {
+        obj->vertex_colors = p->col;
+        p->col = NULL; /* handed over */
+    }
+    obj->vertex_count = (uint32_t)p->v_count;
+    obj->triangle_count = (uint32_t)p->tri_total;
+    obj->face_count = (uint32_t)p->face_count;
+    return ZL_OBJ_OK;
+}
+
+zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const char *name,
+                              const zl_obj_options *opt, char *msg, size_t msg_size)
+{
+    parser p;
+    zl_obj_status st;
+    if (msg != NULL && msg_size > 0)
+        msg[0] = '\0';
+    if (obj == NULL || (data == NULL && size > 0)) {
+        set_msg(msg, msg_size, "zl_obj_load_mem: NULL argument");
+        return ZL_OBJ_ERR_ARG;
+    }
+    memset(obj, 0, sizeof *obj);
+    memset(&p, 0, sizeof p);
+    p.name = name != NULL ? name : "(memory)";
+    p.msg = msg;
+    p.msg_size = msg_size;
+    p.normalize = opt != NULL ? opt->normalize : 0;
+    {
+        const struct lconv *lc = localeconv();
+        p.decimal_point = (lc != NULL && lc->decimal_point != NULL &&
+                           lc->decimal_point[0] != '\0' && lc->decimal_point[1] == '\0')
+                              ? lc->decimal_point[0]
+                              : '.';
+    }
+    st = parse_text(&p, data != NULL ? data : "", size);
+    if (st == ZL_OBJ_OK)
+        st = build(&p, obj);
+    parser_free(&p);
+    if (st != ZL_OBJ_OK)
+        zl_obj_free(obj);
+    return st;
+}
+
+zl_obj_status zl_obj_load_file(zl_obj *obj, const char *path, const zl_obj_options *opt, char *msg,
+                               size_t msg_size)
+{
+    FILE *f;
+    char *buf = NULL;
+    size_t size = 0, cap = 0;
+    zl_obj_status st;
+    if (msg != NULL && msg_size > 0)
+        msg[0] = '\0';
+    if (obj == NULL || path == NULL) {
+        set_msg(msg, msg_size, "zl_obj_load_file: NULL argument");
+        return ZL_OBJ_ERR_ARG;
+    }
+    memset(obj, 0, sizeof *obj);
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        set_msg(msg, msg_size, "%s: cannot open: %s", path, strerror(errno));
+        return ZL_OBJ_ERR_IO;
+    }
+    for (;;) {
+        size_t got;
+        char *nb = (char *)grow(buf, &cap, size + 65536, 1);
+        if (nb == NULL) {
+            free(buf);
+            fclose(f);
+            set_msg(msg, msg_size, "%s: out of memory reading the file", path);
+            return ZL_OBJ_ERR_MEMORY;
+        }
+        buf = nb;
+        got = fread(buf + size, 1, cap - size, f);
+        size += got;
+        if (got == 0)
+            break;
+    }
+    if (ferror(f)) {
+        free(buf);
+        fclose(f);
+        set_msg(msg, msg_size, "%s: read error", path);
+        return ZL_OBJ_ERR_IO;
+    }
+    fclose(f);
+    st = zl_obj_load_mem(obj, buf, size, path, opt, msg, msg_size);
+    free(buf);
+    return st;
+}
+
+void zl_obj_free(zl_obj *obj)
+{
+    if (obj == NULL)
+        return;
+    free(obj->positions);
+    free(obj->indices);
+    free(obj->vertex_colors);
+    memset(obj, 0, sizeof *obj);
+}
+
+zl_mesh zl_obj_mesh(const zl_obj *obj)
+{
+    zl_mesh m;
+    memset(&m, 0, sizeof m);
+    if (obj == NULL)
+        return m;
+    m.positions = obj->positions;
+    m.indices = obj->indices;
+    m.vertex_colors = obj->vertex_colors;
+    m.face_colors = NULL;
+    m.vertex_count = (uint16_t)obj->vertex_count;
+    m.triangle_count = (uint16_t)obj->triangle_count;
+    return m;
+}
+
+const char *zl_obj_status_name(zl_obj_status s)
+{
+    switch (s) {
+    case ZL_OBJ_OK:
+        return "ok";
+    case ZL_OBJ_ERR_IO:
+        return "I/O error";
+    case ZL_OBJ_ERR_PARSE:
+        return "malformed OBJ";
+    case ZL_OBJ_ERR_LIMIT:
+        return "too large for a zl_mesh";
+    case ZL_OBJ_ERR_MEMORY:
+        return "out of memory";
+    case ZL_OBJ_ERR_ARG:
+        return "bad argument";
+    }
+    return "unknown status";
+}

@@ -1,0 +1,938 @@
+/*
+ * zline-render: render an OBJ model to a PPM image with the zline core.
+ *
+ * Floating point appears only where text is parsed (options, the OBJ file);
+ * every number is converted to Q16.16 before it reaches the core, and the
+ * matrices are built with the core's own zl_mat4_* functions, so the image
+ * is what a microcontroller running zline would draw.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "zl_obj.h"
+#include "zl_pnm.h"
+#include "zline/zline.h"
+
+#define EXIT_USAGE 2
+#define CLEAR_DEPTH 65535u
+/* Returned by the band callback when writing a row failed. */
+#define BAND_WRITE_FAILED 100
+
+static const char usage_text[] =
+    "Usage: zline-render [options] model.obj out.ppm\n"
+    "\n"
+    "Render a Wavefront OBJ model with the zline integer rasteriser and write\n"
+    "the image as a binary PPM (P6). With no options this is the benchmark\n"
+    "scene: the model normalised (bounding box centred on the origin, largest\n"
+    "extent 2), camera at (0,0,3.5) looking at the origin, 60 degree vertical\n"
+    "field of view, near 0.1, far 100, back faces culled, 320x240, flat shading.\n"
+    "On any error nothing is written and the exit status is non-zero (2 for\n"
+    "a bad command line). An option's value follows it or an '=' sign.\n"
+    "\n"
+    "Image\n"
+    "  --size WxH           image size in pixels, 1..4096 each (default 320x240)\n"
+    "  --format F           colour buffer format: rgb888 (default), rgb565 or\n"
+    "                       rgb565be; the PPM shows what that format keeps\n"
+    "  --bg R,G,B           background colour, 0..255 each (default 0,0,0)\n"
+    "  --depth out.pgm      also write the 16-bit depth buffer as a PGM (P5,\n"
+    "                       maxval 65535; 65535 where nothing was drawn)\n"
+    "\n"
+    "Camera (model space = world space; angles in degrees)\n"
+    "  --eye X,Y,Z          camera position (default 0,0,3.5)\n"
+    "  --target X,Y,Z       point looked at (default 0,0,0)\n"
+    "  --orbit YAW,PITCH,D  camera on a sphere of radius D around the target:\n"
+    "                       yaw about +y from +z, pitch up from the xz plane;\n"
+    "                       0,0,3.5 is the default camera (not with --eye)\n"
+    "  --fov DEG            vertical field of view, 0 < DEG < 180 (default 60)\n"
+    "  --near N --far F     clip planes, 0 < N < F <= 32767, N >= F/65536\n"
+    "                       (default 0.1 and 100)\n"
+    "  The up direction is +y (-z when looking straight up or down). Eye to\n"
+    "  target must be at most 180 units.\n"
+    "\n"
+    "Geometry\n"
+    "  --no-normalize       use the file's coordinates as they are (they must\n"
+    "                       fit Q16.16: -32768 .. 32767.99998)\n"
+    "  --pixel-space        positions are already window coordinates: x, y in\n"
+    "                       pixels (y down), z window depth 0..1; no camera, no\n"
+    "                       normalisation (the core is given no matrix); no\n"
+    "                       lighting unless --light is given\n"
+    "  --cull none|back|front  faces to discard (default back)\n"
+    "  --front ccw|cw       winding of front faces as seen on screen (default ccw,\n"
+    "                       the OBJ convention)\n"
+    "\n"
+    "Shading\n"
+    "  --shade flat         one colour per triangle, lit by a directional light\n"
+    "                       (default)\n"
+    "  --shade vertex       Gouraud: the model's per-vertex colours (v x y z r g b),\n"
+    "                       or --color on every vertex when it has none; lit too\n"
+    "  --shade depth        the depth buffer as grey: nearest vertex of the model\n"
+    "                       white, farthest dark grey (64), linear in stored depth;\n"
+    "                       the background colour where nothing was drawn\n"
+    "  --color R,G,B        model colour, 0..255 each (default 255,255,255)\n"
+    "  --light X,Y,Z        direction towards the light, model space (normalised;\n"
+    "                       default -1,2,2)\n"
+    "  --ambient A          light reaching faces turned away, 0..255 (default 48)\n"
+    "  --no-light           no lighting: flat colour or vertex colours as they are\n"
+    "\n"
+    "Renderer\n"
+    "  --mode frame         zl_draw_mesh into a full-frame colour and depth buffer\n"
+    "                       (default)\n"
+    "  --mode scanline      zl_frame, one row per band: the frame is never held;\n"
+    "                       rows go to the files as the bands come out\n"
+    "  --mode band=N        zl_frame with bands of N rows (clamped to the height)\n"
+    "                       The three modes give byte-identical files.\n"
+    "  --stats              print the model size, memory used (in scanline and\n"
+    "                       band mode the exact zl_frame_bytes work buffer) and\n"
+    "                       what the scene needed (zl_frame_needs)\n"
+    "  --help               this text\n"
+    "\n"
+    "Limits: a model has at most 65535 vertices and 65535 triangles (after\n"
+    "splitting polygons into triangles).\n"
+    "\n"
+    "Example:\n"
+    "  zline-render port/host/models/bunny.obj bunny.ppm\n"
+    "  zline-render --orbit 30,20,3.5 --depth bunny.pgm --mode scanline --stats \\\n"
+    "      port/host/models/bunny.obj bunny.ppm\n";
+
+enum { SHADE_FLAT, SHADE_VERTEX, SHADE_DEPTH };
+
+typedef struct {
+    const char *model, *out, *depth_out;
+    unsigned width, height;
+    int have_eye, have_target, have_orbit;
+    double eye[3], target[3], orbit[3];
+    double fov, near_z, far_z;
+    int have_near, have_far, have_fov;
+    int cull, front, shade, light_on, have_light;
+    double light[3];
+    int ambient;
+    zl_rgb color, bg;
+    int pixel_space, normalize;
+    unsigned band_rows; /* 0: frame mode */
+    zl_format format;
+    int stats;
+} options;
+
+/* ------------------------------------------------------------------ errors */
+
+static void error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("zline-render: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+static int usage_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("zline-render: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputs("\nTry 'zline-render --help'.\n", stderr);
+    return EXIT_USAGE;
+}
+
+static const char *status_name(zl_status s)
+{
+    switch (s) {
+    case ZL_OK:
+        return "ok";
+    case ZL_DONE:
+        return "done";
+    case ZL_ERR_ARG:
+        return "ZL_ERR_ARG (bad argument)";
+    case ZL_ERR_RANGE:
+        return "ZL_ERR_RANGE (a number out of range)";
+    case ZL_ERR_SIZE:
+        return "ZL_ERR_SIZE (bad buffer or dimension)";
+    case ZL_ERR_CAPACITY:
+        return "ZL_ERR_CAPACITY (the scene needs more than the frame was sized for)";
+    }
+    return "unknown status";
+}
+
+/* ------------------------------------------------------------ option values */
+
+static int parse_real(const char *s, double *out)
+{
+    char *end;
+    double v;
+    if (*s == '\0')
+        return 0;
+    v = strtod(s, &end);
+    if (*end != '\0' || !isfinite(v))
+        return 0;
+    *out = v;
+    return 1;
+}
+
+/* n comma-separated reals. */
+static int parse_reals(const char *s, double *out, int n)
+{
+    char buf[256];
+    char *p = buf;
+    int i;
+    if (strlen(s) >= sizeof buf)
+        return 0;
+    strcpy(buf, s);
+    for (i = 0; i < n; i++) {
+        char *comma = strchr(p, ',');
+        if ((comma == NULL) != (i == n - 1))
+            return 0;
+        if (comma != NULL)
+            *comma = '\0';
+        if (!parse_real(p, &out[i]))
+            return 0;
+        p = comma != NULL ? comma + 1 : p;
+    }
+    return 1;
+}
+
+static int parse_uint(const char *s, unsigned long max, unsigned long *out)
+{
+    unsigned long v = 0;
+    if (*s == '\0')
+        return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9')
+            return 0;
+        v = v * 10 + (unsigned long)(*s - '0');
+        if (v > max)
+            return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+static int parse_rgb(const char *s, zl_rgb *out)
+{
+    double v[3];
+    int i;
+    if (!parse_reals(s, v, 3))
+        return 0;
+    for (i = 0; i < 3; i++)
+        if (v[i] < 0.0 || v[i] > 255.0 || v[i] != floor(v[i]))
+            return 0;
+    out->r = (uint8_t)v[0];
+    out->g = (uint8_t)v[1];
+    out->b = (uint8_t)v[2];
+    return 1;
+}
+
+/* A real to Q16.16, rounded to nearest; 0 when out of range. */
+static int to_fixed(double v, zl_fixed *out)
+{
+    double r = floor(v * 65536.0 + 0.5);
+    if (!(r >= (double)INT32_MIN && r <= (double)INT32_MAX))
+        return 0;
+    *out = (zl_fixed)r;
+    return 1;
+}
+
+static int to_vec3(const double *v, zl_vec3 *out)
+{
+    return to_fixed(v[0], &out->x) && to_fixed(v[1], &out->y) && to_fixed(v[2], &out->z);
+}
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    int i, positional = 0;
+    memset(o, 0, sizeof *o);
+    o->width = 320;
+    o->height = 240;
+    o->eye[2] = 3.5;
+    o->fov = 60.0;
+    o->near_z = 0.1;
+    o->far_z = 100.0;
+    o->cull = ZL_CULL_BACK;
+    o->front = ZL_FRONT_CCW;
+    o->shade = SHADE_FLAT;
+    o->light_on = 1;
+    o->light[0] = -1.0;
+    o->light[1] = 2.0;
+    o->light[2] = 2.0;
+    o->ambient = 48;
+    o->color.r = o->color.g = o->color.b = 255;
+    o->normalize = 1;
+    o->format = ZL_FORMAT_RGB888;
+
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = NULL;
+        char name[32];
+        if (positional || a[0] != '-' || a[1] == '\0') {
+            if (o->model == NULL)
+                o->model = a;
+            else if (o->out == NULL)
+                o->out = a;
+            else
+                return usage_error("unexpected argument '%s'", a);
+            continue;
+        }
+        if (strcmp(a, "--") == 0) {
+            positional = 1;
+            continue;
+        }
+        /* --name=value or --name value */
+        {
+            const char *eq = strchr(a, '=');
+            size_t n = eq ? (size_t)(eq - a) : strlen(a);
+            if (n >= sizeof name)
+                return usage_error("unknown option '%s'", a);
+            memcpy(name, a, n);
+            name[n] = '\0';
+            if (eq)
+                val = eq + 1;
+        }
+#define FLAG(s) (strcmp(name, s) == 0)
+#define NEEDS_VALUE                                                                                \
+    do {                                                                                           \
+        if (val == NULL) {                                                                         \
+            if (i + 1 >= argc)                                                                     \
+                return usage_error("%s needs a value", name);                                      \
+            val = argv[++i];                                                                       \
+        }                                                                                          \
+    } while (0)
+#define NO_VALUE                                                                                   \
+    do {                                                                                           \
+        if (val != NULL)                                                                           \
+            return usage_error("%s takes no value", name);                                         \
+    } while (0)
+        if (FLAG("--help") || FLAG("-h")) {
+            fputs(usage_text, stdout);
+            return -1;
+        } else if (FLAG("--size")) {
+            unsigned long w, h;
+            char buf[32];
+            char *x;
+            NEEDS_VALUE;
+            if (strlen(val) >= sizeof buf)
+                return usage_error("--size: expected WxH, got '%s'", val);
+            strcpy(buf, val);
+            x = strchr(buf, 'x');
+            if (x == NULL)
+                return usage_error("--size: expected WxH, got '%s'", val);
+            *x = '\0';
+            if (!parse_uint(buf, ZL_MAX_DIM, &w) || !parse_uint(x + 1, ZL_MAX_DIM, &h) || w < 1 ||
+                h < 1)
+                return usage_error("--size: expected WxH with 1..%d each, got '%s'", ZL_MAX_DIM,
+                                   val);
+            o->width = (unsigned)w;
+            o->height = (unsigned)h;
+        } else if (FLAG("--format")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "rgb888") == 0)
+                o->format = ZL_FORMAT_RGB888;
+            else if (strcmp(val, "rgb565") == 0)
+                o->format = ZL_FORMAT_RGB565;
+            else if (strcmp(val, "rgb565be") == 0)
+                o->format = ZL_FORMAT_RGB565_BE;
+            else
+                return usage_error("--format: expected rgb888, rgb565 or rgb565be, got '%s'", val);
+        } else if (FLAG("--eye")) {
+            NEEDS_VALUE;
+            if (!parse_reals(val, o->eye, 3))
+                return usage_error("--eye: expected X,Y,Z, got '%s'", val);
+            o->have_eye = 1;
+        } else if (FLAG("--target")) {
+            NEEDS_VALUE;
+            if (!parse_reals(val, o->target, 3))
+                return usage_error("--target: expected X,Y,Z, got '%s'", val);
+            o->have_target = 1;
+        } else if (FLAG("--orbit")) {
+            NEEDS_VALUE;
+            if (!parse_reals(val, o->orbit, 3) || o->orbit[2] <= 0.0)
+                return usage_error("--orbit: expected YAW,PITCH,DISTANCE with DISTANCE > 0, got "
+                                   "'%s'",
+                                   val);
+            o->have_orbit = 1;
+        } else if (FLAG("--fov")) {
+            NEEDS_VALUE;
+            if (!parse_real(val, &o->fov) || !(o->fov > 0.0 && o->fov < 180.0))
+                return usage_error("--fov: expected degrees, 0 < DEG < 180, got '%s'", val);
+            o->have_fov = 1;
+        } else if (FLAG("--near")) {
+            NEEDS_VALUE;
+            if (!parse_real(val, &o->near_z) || !(o->near_z > 0.0))
+                return usage_error("--near: expected a number > 0, got '%s'", val);
+            o->have_near = 1;
+        } else if (FLAG("--far")) {
+            NEEDS_VALUE;
+            if (!parse_real(val, &o->far_z) || !(o->far_z > 0.0 && o->far_z <= 32767.0))
+                return usage_error("--far: expected a number in (0, 32767], got '%s'", val);
+            o->have_far = 1;
+        } else if (FLAG("--cull")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "none") == 0)
+                o->cull = ZL_CULL_NONE;
+            else if (strcmp(val, "back") == 0)
+                o->cull = ZL_CULL_BACK;
+            else if (strcmp(val, "front") == 0)
+                o->cull = ZL_CULL_FRONT;
+            else
+                return usage_error("--cull: expected none, back or front, got '%s'", val);
+        } else if (FLAG("--front")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "ccw") == 0)
+                o->front = ZL_FRONT_CCW;
+            else if (strcmp(val, "cw") == 0)
+                o->front = ZL_FRONT_CW;
+            else
+                return usage_error("--front: expected ccw or cw, got '%s'", val);
+        } else if (FLAG("--shade")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "flat") == 0)
+                o->shade = SHADE_FLAT;
+            else if (strcmp(val, "vertex") == 0)
+                o->shade = SHADE_VERTEX;
+            else if (strcmp(val, "depth") == 0)
+                o->shade = SHADE_DEPTH;
+            else
+                return usage_error("--shade: expected flat, vertex or depth, got '%s'", val);
+        } else if (FLAG("--color") || FLAG("--colour")) {
+            NEEDS_VALUE;
+            if (!parse_rgb(val, &o->color))
+                return usage_error("--color: expected R,G,B with integers 0..255, got '%s'", val);
+        } else if (FLAG("--bg")) {
+            NEEDS_VALUE;
+            if (!parse_rgb(val, &o->bg))
+                return usage_error("--bg: expected R,G,B with integers 0..255, got '%s'", val);
+        } else if (FLAG("--light")) {
+            NEEDS_VALUE;
+            o->have_light = 1;
+            if (!parse_reals(val, o->light, 3) ||
+                o->light[0] * o->light[0] + o->light[1] * o->light[1] + o->light[2] * o->light[2] <
+                    1e-12)
+                return usage_error("--light: expected a non-zero direction X,Y,Z, got '%s'", val);
+        } else if (FLAG("--ambient")) {
+            unsigned long v;
+            NEEDS_VALUE;
+            if (!parse_uint(val, 255, &v))
+                return usage_error("--ambient: expected 0..255, got '%s'", val);
+            o->ambient = (int)v;
+        } else if (FLAG("--no-light")) {
+            NO_VALUE;
+            o->light_on = 0;
+        } else if (FLAG("--depth")) {
+            NEEDS_VALUE;
+            if (*val == '\0')
+                return usage_error("--depth needs a file name");
+            o->depth_out = val;
+        } else if (FLAG("--pixel-space")) {
+            NO_VALUE;
+            o->pixel_space = 1;
+        } else if (FLAG("--no-normalize") || FLAG("--no-normalise")) {
+            NO_VALUE;
+            o->normalize = 0;
+        } else if (FLAG("--mode")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "frame") == 0) {
+                o->band_rows = 0;
+            } else if (strcmp(val, "scanline") == 0) {
+                o->band_rows = 1;
+            } else if (strncmp(val, "band=", 5) == 0) {
+                unsigned long n;
+                if (!parse_uint(val + 5, 65535, &n) || n < 1)
+                    return usage_error("--mode band=N: N must be 1..65535, got '%s'", val + 5);
+                o->band_rows = (unsigned)n;
+            } else {
+                return usage_error("--mode: expected frame, scanline or band=N, got '%s'", val);
+            }
+        } else if (FLAG("--stats")) {
+            NO_VALUE;
+            o->stats = 1;
+        } else {
+            return usage_error("unknown option '%s'", a);
+        }
+#undef FLAG
+#undef NEEDS_VALUE
+#undef NO_VALUE
+    }
+    if (o->model == NULL || o->out == NULL)
+        return usage_error("expected a model and an output file: zline-render [options] "
+                           "model.obj out.ppm");
+    if (o->depth_out != NULL && strcmp(o->depth_out, o->out) == 0)
+        return usage_error("the image and --depth must be different files");
+    if (strcmp(o->model, o->out) == 0 ||
+        (o->depth_out != NULL && strcmp(o->model, o->depth_out) == 0))
+        return usage_error("refusing to write over the model file");
+    if (o->have_eye && o->have_orbit)
+        return usage_error("--eye and --orbit both place the camera: give one");
+    if (o->pixel_space) {
+        if (o->have_eye || o->have_target || o->have_orbit || o->have_fov || o->have_near ||
+            o->have_far)
+            return usage_error("--pixel-space takes no camera options (--eye, --target, "
+                               "--orbit, --fov, --near, --far)");
+        o->normalize = 0;
+        if (!o->have_light)
+            o->light_on = 0; /* a light in window space only if asked for */
+    }
+    if (o->band_rows > o->height)
+        o->band_rows = o->height;
+    return 0;
+}
+
+/* ------------------------------------------------------------------ camera */
+
+static int build_mvp(const options *o, zl_mat4 *mvp)
+{
+    zl_vec3 eye, target, up;
+    zl_mat4 view, proj;
+    zl_fixed fov_deg, near_z, far_z, aspect;
+    zl_status st;
+    int64_t dx, dy, dz;
+
+    if (!to_vec3(o->target, &target)) {
+        error("--target is outside the Q16.16 range");
+        return 0;
+    }
+    if (o->have_orbit) {
+        zl_fixed yaw_deg, pitch_deg, dist;
+        zl_angle yaw, pitch;
+        zl_fixed cp, sp, cy, sy;
+        int64_t ex, ey, ez;
+        if (!to_fixed(o->orbit[0], &yaw_deg) || !to_fixed(o->orbit[1], &pitch_deg) ||
+            !to_fixed(o->orbit[2], &dist) || dist <= 0) {
+            error("--orbit: a value is outside the Q16.16 range");
+            return 0;
+        }
+        yaw = zl_angle_from_deg(yaw_deg);
+        pitch = zl_angle_from_deg(pitch_deg);
+        cp = zl_cos(pitch);
+        sp = zl_sin(pitch);
+        cy = zl_cos(yaw);
+        sy = zl_sin(yaw);
+        /* target + dist * (cos p sin y, sin p, cos p cos y); |dist| < 32768 and
+         * |sin|, |cos| <= 1 keep every product in range. */
+        ex = (int64_t)target.x + zl_fx_mul(dist, zl_fx_mul(cp, sy));
+        ey = (int64_t)target.y + zl_fx_mul(dist, sp);
+        ez = (int64_t)target.z + zl_fx_mul(dist, zl_fx_mul(cp, cy));
+        if (ex != zl_fx_sat(ex) || ey != zl_fx_sat(ey) || ez != zl_fx_sat(ez)) {
+            error("--orbit: the camera position leaves the Q16.16 range");
+            return 0;
+        }
+        eye.x = (zl_fixed)ex;
+        eye.y = (zl_fixed)ey;
+        eye.z = (zl_fixed)ez;
+    } else if (!to_vec3(o->eye, &eye)) {
+        error("--eye is outside the Q16.16 range");
+        return 0;
+    }
+    /* +y up, unless the view is (nearly) vertical: then -z. */
+    dx = (int64_t)target.x - eye.x;
+    dy = (int64_t)target.y - eye.y;
+    dz = (int64_t)target.z - eye.z;
+    up.x = 0;
+    up.y = ZL_FX_ONE;
+    up.z = 0;
+    if (((dx < 0 ? -dx : dx) + (dz < 0 ? -dz : dz)) * 64 < (dy < 0 ? -dy : dy)) {
+        up.y = 0;
+        up.z = -ZL_FX_ONE;
+    }
+    st = zl_mat4_look_at(&view, eye, target, up);
+    if (st != ZL_OK) {
+        error("camera: zl_mat4_look_at failed with %s: the eye must differ from the target and "
+              "be at most 180 units from it",
+              status_name(st));
+        return 0;
+    }
+    if (!to_fixed(o->fov, &fov_deg) || !to_fixed(o->near_z, &near_z) ||
+        !to_fixed(o->far_z, &far_z) || near_z <= 0) {
+        error("--fov, --near or --far is outside the Q16.16 range (or --near rounds to 0)");
+        return 0;
+    }
+    aspect = (zl_fixed)(((int64_t)o->width * 65536 + o->height / 2) / o->height);
+    st = zl_mat4_perspective(&proj, zl_angle_from_deg(fov_deg), aspect, near_z, far_z);
+    if (st != ZL_OK) {
+        error("projection: zl_mat4_perspective failed with %s: need 0 < fov < 180, "
+              "0 < near < far <= 32767, near >= far / 65536, aspect 1/64 .. 64",
+              status_name(st));
+        return 0;
+    }
+    zl_mat4_mul(mvp, &proj, &view);
+    return 1;
+}
+
+/* ----------------------------------------------------------------- output */
+
+typedef struct {
+    const options *opt;
+    zl_pnm_writer image, depth;
+    uint16_t dmin, dmax; /* window depth of the model's nearest and farthest vertex */
+    uint8_t *grey_row;   /* --shade depth: one RGB888 row */
+    uint32_t rows_out;
+} output;
+
+/*
+ * The depth range the grey scale spans: the window depths of the model's
+ * vertices. Computed from the geometry (not the pixels), so it is known
+ * before the first band and identical in every mode.
+ */
+static void depth_range(output *out, const zl_obj *obj, const zl_mat4 *mvp, const options *o)
+{
+    uint32_t i;
+    uint16_t lo = 65535, hi = 0;
+    zl_fixed near_z = 0, far_z = 0;
+    if (mvp != NULL) {
+        to_fixed(o->near_z, &near_z);
+        to_fixed(o->far_z, &far_z);
+    }
+    for (i = 0; i < obj->vertex_count; i++) {
+        zl_vec3 p;
+        uint16_t d;
+        p.x = obj->positions[3 * i];
+        p.y = obj->positions[3 * i + 1];
+        p.z = obj->positions[3 * i + 2];
+        if (mvp == NULL) {
+            /* pixel space: z is window depth 0..1 */
+            int64_t z = ((int64_t)p.z * 65535 + 32768) >> 16;
+            d = (uint16_t)(z < 0 ? 0 : (z > 65535 ? 65535 : z));
+        } else {
+            zl_vec4 c;
+            if (zl_transform_point(mvp, p, &c) != ZL_OK)
+                continue;
+            /* w_clip is the eye distance; zl_depth_of_distance clamps to [near, far] */
+            d = zl_depth_of_distance(near_z, far_z, c.w);
+        }
+        if (d < lo)
+            lo = d;
+        if (d > hi)
+            hi = d;
+    }
+    if (lo > hi)
+        lo = hi = 0;
+    out->dmin = lo;
+    out->dmax = hi;
+}
+
+static uint8_t depth_grey(const output *out, uint16_t d)
+{
+    uint32_t span = (uint32_t)out->dmax - out->dmin;
+    uint32_t t;
+    if (span == 0)
+        span = 1;
+    if (d <= out->dmin)
+        return 255;
+    if (d >= out->dmax)
+        return 64;
+    t = ((uint32_t)(d - out->dmin) * 191u + span / 2) / span;
+    return (uint8_t)(255u - t);
+}
+
+/* Write `rows` rows of colour and depth to the open files. */
+static int write_rows(output *out, const void *color, int32_t cstride, const uint16_t *depth,
+                      int32_t dstride, unsigned rows)
+{
+    const options *o = out->opt;
+    unsigned y, x;
+    for (y = 0; y < rows; y++) {
+        const uint16_t *drow =
+            (const uint16_t *)(const void *)((const uint8_t *)depth + (size_t)y * (size_t)dstride);
+        if (o->shade == SHADE_DEPTH) {
+            for (x = 0; x < o->width; x++) {
+                uint8_t *px = out->grey_row + 3 * (size_t)x;
+                if (drow[x] == CLEAR_DEPTH) {
+                    px[0] = o->bg.r;
+                    px[1] = o->bg.g;
+                    px[2] = o->bg.b;
+                } else {
+                    px[0] = px[1] = px[2] = depth_grey(out, drow[x]);
+                }
+            }
+            if (zl_pnm_write_row_rgb(&out->image, out->grey_row, ZL_FORMAT_RGB888) != ZL_PNM_OK)
+                return 0;
+        } else if (zl_pnm_write_row_rgb(&out->image,
+                                        (const uint8_t *)color + (size_t)y * (size_t)cstride,
+                                        o->format) != ZL_PNM_OK) {
+            return 0;
+        }
+        if (o->depth_out != NULL && zl_pnm_write_row_gray16(&out->depth, drow) != ZL_PNM_OK)
+            return 0;
+        out->rows_out++;
+    }
+    return 1;
+}
+
+static int band_out(void *user, const zl_band *band)
+{
+    output *out = (output *)user;
+    if (band->first_row != out->rows_out) {
+        error("internal: band starts at row %u, expected %lu", (unsigned)band->first_row,
+              (unsigned long)out->rows_out);
+        return BAND_WRITE_FAILED;
+    }
+    if (!write_rows(out, band->color, band->color_stride, band->depth, band->depth_stride,
+                    band->rows))
+        return BAND_WRITE_FAILED;
+    return 0;
+}
+
+/* ----------------------------------------------------------------- render */
+
+static int render_frame(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
+                        const zl_state *state, output *out)
+{
+    unsigned bpp = zl_format_bytes(o->format);
+    size_t cbytes = (size_t)o->width * o->height * bpp;
+    size_t dbytes = (size_t)o->width * o->height * sizeof(uint16_t);
+    void *color = malloc(cbytes);
+    uint16_t *depth = (uint16_t *)malloc(dbytes);
+    zl_target target;
+    zl_context ctx;
+    zl_status st;
+    int ok = 0;
+    if (color == NULL || depth == NULL) {
+        error("out of memory for a %ux%u frame", o->width, o->height);
+        goto done;
+    }
+    memset(&target, 0, sizeof target);
+    target.color = color;
+    target.color_stride = (int32_t)(o->width * bpp);
+    target.depth = depth;
+    target.depth_stride = (int32_t)(o->width * sizeof(uint16_t));
+    target.width = (uint16_t)o->width;
+    target.height = (uint16_t)o->height;
+    target.format = (uint8_t)o->format;
+    st = zl_init(&ctx, &target);
+    if (st == ZL_OK) {
+        ctx.state = *state;
+        st = zl_clear(&ctx, o->bg, (uint16_t)CLEAR_DEPTH);
+    }
+    if (st == ZL_OK)
+        st = zl_draw_mesh(&ctx, mesh, mvp);
+    if (st != ZL_OK) {
+        error("render failed: %s", status_name(st));
+        goto done;
+    }
+    if (o->stats)
+        printf("frame buffers: %lu bytes (colour %lu + depth %lu)\n",
+               (unsigned long)(cbytes + dbytes), (unsigned long)cbytes, (unsigned long)dbytes);
+    ok = write_rows(out, color, target.color_stride, depth, target.depth_stride, o->height);
+done:
+    free(color);
+    free(depth);
+    return ok;
+}
+
+static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *mesh,
+                         uint32_t triangles, uint32_t active)
+{
+    memset(cfg, 0, sizeof *cfg);
+    cfg->width = (uint16_t)o->width;
+    cfg->height = (uint16_t)o->height;
+    cfg->band_rows = (uint16_t)o->band_rows;
+    cfg->format = (uint8_t)o->format;
+    cfg->color_buffers = 1;
+    cfg->gouraud = o->shade == SHADE_VERTEX;
+    cfg->max_meshes = 1;
+    cfg->max_vertices = mesh->vertex_count;
+    cfg->max_triangles = triangles;
+    cfg->max_active = active;
+}
+
+static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
+                        const zl_state *state, output *out)
+{
+    zl_frame_config cfg;
+    zl_frame frame;
+    size_t bytes;
+    void *work;
+    int r;
+    zl_status st;
+    /* The sum of triangle_count always suffices for both capacities. */
+    frame_config(&cfg, o, mesh, mesh->triangle_count, mesh->triangle_count);
+    bytes = zl_frame_bytes(&cfg);
+    if (bytes == 0) {
+        error("zl_frame_bytes rejects the frame configuration (%ux%u, %u rows a band)", o->width,
+              o->height, o->band_rows);
+        return 0;
+    }
+    work = malloc(bytes); /* exactly what zl_frame_bytes asks, nothing more */
+    if (work == NULL) {
+        error("out of memory for a %lu-byte work buffer", (unsigned long)bytes);
+        return 0;
+    }
+    st = zl_frame_begin(&frame, &cfg, work, bytes, o->bg, (uint16_t)CLEAR_DEPTH);
+    if (st == ZL_OK)
+        st = zl_frame_add_mesh(&frame, mesh, mvp, state);
+    if (st != ZL_OK) {
+        error("zl_frame setup failed: %s", status_name(st));
+        free(work);
+        return 0;
+    }
+    r = (int)zl_frame_render(&frame, band_out, out);
+    if (r != 0) {
+        if (r != BAND_WRITE_FAILED)
+            error("render failed: %s", status_name((zl_status)r));
+        free(work);
+        return 0;
+    }
+    if (o->stats) {
+        zl_frame_needs_t needs = zl_frame_needs(&frame);
+        zl_frame_config tight;
+        printf("work buffer: %lu bytes (zl_frame_bytes: %ux%u, %u row%s a band, max_triangles = "
+               "max_active = %u)\n",
+               (unsigned long)bytes, o->width, o->height, o->band_rows,
+               o->band_rows == 1 ? "" : "s", (unsigned)mesh->triangle_count);
+        frame_config(&tight, o, mesh, needs.triangles ? needs.triangles : 1,
+                     needs.active ? needs.active : 1);
+        printf("needs: %lu visible triangles, at most %lu active in a row; sized to that the "
+               "work buffer would be %lu bytes\n",
+               (unsigned long)needs.triangles, (unsigned long)needs.active,
+               (unsigned long)zl_frame_bytes(&tight));
+    }
+    free(work);
+    return 1;
+}
+
+/* ------------------------------------------------------------------- main */
+
+static int normalize_light(const double *l, zl_vec3 *out)
+{
+    double n = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    double u[3];
+    u[0] = l[0] / n;
+    u[1] = l[1] / n;
+    u[2] = l[2] / n;
+    return to_vec3(u, out);
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    zl_obj obj;
+    zl_obj_options lopt;
+    zl_mesh mesh;
+    zl_mat4 mvp;
+    const zl_mat4 *mvp_ptr = NULL;
+    zl_state state;
+    output out;
+    uint8_t *colors = NULL;
+    char msg[512];
+    int r, ok = 0;
+
+    r = parse_options(argc, argv, &o);
+    if (r < 0)
+        return 0; /* --help */
+    if (r > 0)
+        return r;
+
+    zl_obj_options_default(&lopt);
+    lopt.normalize = o.normalize;
+    if (zl_obj_load_file(&obj, o.model, &lopt, msg, sizeof msg) != ZL_OBJ_OK) {
+        error("%s", msg);
+        return EXIT_FAILURE;
+    }
+    mesh = zl_obj_mesh(&obj);
+
+    memset(&out, 0, sizeof out);
+    out.opt = &o;
+
+    if (!o.pixel_space) {
+        if (!build_mvp(&o, &mvp))
+            goto done;
+        mvp_ptr = &mvp;
+    }
+
+    zl_state_default(&state);
+    state.cull = (uint8_t)o.cull;
+    state.front_face = (uint8_t)o.front;
+    state.color = o.color;
+    state.light_on = (uint8_t)(o.light_on && o.shade != SHADE_DEPTH);
+    state.ambient = (uint8_t)o.ambient;
+    if (!normalize_light(o.light, &state.light_dir)) {
+        error("--light: bad direction");
+        goto done;
+    }
+    if (o.shade == SHADE_VERTEX) {
+        state.shading = ZL_SHADE_GOURAUD;
+        if (mesh.vertex_colors == NULL) {
+            uint32_t i;
+            colors = (uint8_t *)malloc((size_t)mesh.vertex_count * 3 + 1);
+            if (colors == NULL) {
+                error("out of memory");
+                goto done;
+            }
+            for (i = 0; i < mesh.vertex_count; i++) {
+                colors[3 * i] = o.color.r;
+                colors[3 * i + 1] = o.color.g;
+                colors[3 * i + 2] = o.color.b;
+            }
+            mesh.vertex_colors = colors;
+        }
+    } else {
+        state.shading = ZL_SHADE_FLAT;
+        mesh.vertex_colors = NULL;
+    }
+    if (zl_state_check(&state) != ZL_OK) {
+        error("internal: invalid render state");
+        goto done;
+    }
+
+    if (o.shade == SHADE_DEPTH) {
+        depth_range(&out, &obj, mvp_ptr, &o);
+        out.grey_row = (uint8_t *)malloc((size_t)o.width * 3);
+        if (out.grey_row == NULL) {
+            error("out of memory");
+            goto done;
+        }
+    }
+
+    if (o.stats) {
+        printf("model: %s: %lu vertices, %lu triangles (%lu faces)%s\n", o.model,
+               (unsigned long)obj.vertex_count, (unsigned long)obj.triangle_count,
+               (unsigned long)obj.face_count, mesh.vertex_colors ? ", vertex colours" : "");
+        printf("mode: %s, %ux%u %s\n",
+               o.band_rows == 0 ? "frame" : (o.band_rows == 1 ? "scanline" : "band"), o.width,
+               o.height,
+               o.format == ZL_FORMAT_RGB888
+                   ? "RGB888"
+                   : (o.format == ZL_FORMAT_RGB565 ? "RGB565" : "RGB565_BE"));
+    }
+
+    /* Open the files first: in band mode the rows go out as they are drawn. */
+    if (zl_pnm_open(&out.image, o.out, ZL_PNM_PPM, o.width, o.height, msg, sizeof msg) !=
+        ZL_PNM_OK) {
+        error("%s", msg);
+        goto done;
+    }
+    if (o.depth_out != NULL && zl_pnm_open(&out.depth, o.depth_out, ZL_PNM_PGM16, o.width, o.height,
+                                           msg, sizeof msg) != ZL_PNM_OK) {
+        error("%s", msg);
+        goto done;
+    }
+    /* Writer errors land in msg; the renderer reports its own. */
+    msg[0] = '\0';
+    if (o.band_rows == 0)
+        ok = render_frame(&o, &mesh, mvp_ptr, &state, &out);
+    else
+        ok = render_bands(&o, &mesh, mvp_ptr, &state, &out);
+    /* All files complete before any takes its name: all or nothing. */
+    if (ok && zl_pnm_finish(&out.image) != ZL_PNM_OK)
+        ok = 0;
+    if (ok && o.depth_out != NULL && zl_pnm_finish(&out.depth) != ZL_PNM_OK)
+        ok = 0;
+    if (ok && zl_pnm_commit(&out.image) != ZL_PNM_OK)
+        ok = 0;
+    if (ok && o.depth_out != NULL && zl_pnm_commit(&out.depth) != ZL_PNM_OK) {
+        remove(o.out);
+        ok = 0;
+    }
+    if (!ok && msg[0] != '\0')
+        error("%s", msg);
+
+done:
+    zl_pnm_abort(&out.image);
+    zl_pnm_abort(&out.depth);
+    free(out.grey_row);
+    free(colors);
+    zl_obj_free(&obj);
+    return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
