@@ -1,0 +1,83 @@
+/*
+ * zline-obj2c round trip: the arrays it generated at build time (compiled
+ * into this test) equal, element for element, what the OBJ loader gives for
+ * the same file and options.
+ *   test_obj2c BUNNY.obj TETRA.obj
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "bunny_mesh.h"
+#include "tetra_mesh.h"
+#include "tetra_nc_mesh.h"
+#include "unity.h"
+#include "zl_obj.h"
+
+static const char *bunny_path, *tetra_path;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static void check(const char *path, int normalize, const zl_mesh *gen, uint32_t vcount, uint32_t tcount,
+                  int colors_expected)
+{
+    zl_obj obj;
+    zl_obj_options opt;
+    char msg[256];
+    zl_obj_options_default(&opt);
+    opt.normalize = normalize;
+    TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_OBJ_OK, zl_obj_load_file(&obj, path, &opt, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_UINT(obj.vertex_count, vcount);
+    TEST_ASSERT_EQUAL_UINT(obj.triangle_count, tcount);
+    TEST_ASSERT_EQUAL_UINT(obj.vertex_count, gen->vertex_count);
+    TEST_ASSERT_EQUAL_UINT(obj.triangle_count, gen->triangle_count);
+    TEST_ASSERT_EQUAL_MEMORY(obj.positions, gen->positions, 3 * 4 * obj.vertex_count);
+    TEST_ASSERT_EQUAL_MEMORY(obj.indices, gen->indices, 3 * 2 * obj.triangle_count);
+    if (colors_expected) {
+        TEST_ASSERT_NOT_NULL(obj.vertex_colors);
+        TEST_ASSERT_NOT_NULL(gen->vertex_colors);
+        TEST_ASSERT_EQUAL_MEMORY(obj.vertex_colors, gen->vertex_colors, 3 * obj.vertex_count);
+    } else {
+        TEST_ASSERT_NULL(gen->vertex_colors);
+    }
+    TEST_ASSERT_NULL(gen->face_colors);
+    zl_obj_free(&obj);
+}
+
+static void test_bunny_normalized(void)
+{
+    check(bunny_path, 1, &bunny_mesh, BUNNY_VERTEX_COUNT, BUNNY_TRIANGLE_COUNT, 0);
+    TEST_ASSERT_EQUAL_INT(0, BUNNY_HAS_VERTEX_COLORS);
+}
+
+static void test_tetra_with_colors(void)
+{
+    /* a quad and a negative index in the file: 5 triangles in all */
+    TEST_ASSERT_EQUAL_UINT(5, TETRA_TRIANGLE_COUNT);
+    TEST_ASSERT_EQUAL_INT(1, TETRA_HAS_VERTEX_COLORS);
+    check(tetra_path, 0, &tetra_mesh, TETRA_VERTEX_COUNT, TETRA_TRIANGLE_COUNT, 1);
+    TEST_ASSERT_TRUE(tetra_mesh.vertex_colors == tetra_vertex_colors);
+    TEST_ASSERT_EQUAL_INT(-ZL_FX_ONE * 3 / 2, tetra_positions[0]);
+    TEST_ASSERT_EQUAL_UINT(255, tetra_vertex_colors[0]);
+}
+
+static void test_tetra_without_colors(void)
+{
+    TEST_ASSERT_EQUAL_INT(0, TETRA_NC_HAS_VERTEX_COLORS);
+    check(tetra_path, 0, &tetra_nc_mesh, TETRA_NC_VERTEX_COUNT, TETRA_NC_TRIANGLE_COUNT, 0);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        fprintf(stderr, "usage: test_obj2c BUNNY.obj TETRA.obj\n");
+        return 2;
+    }
+    bunny_path = argv[1];
+    tetra_path = argv[2];
+    UNITY_BEGIN();
+    RUN_TEST(test_bunny_normalized);
+    RUN_TEST(test_tetra_with_colors);
+    RUN_TEST(test_tetra_without_colors);
+    return UNITY_END();
+}
