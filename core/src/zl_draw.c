@@ -113,7 +113,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     if (st == ZL_OK)
         st = zl_state_check(&ctx->state);
     if (st == ZL_OK)
-        st = zl_check_mesh(mesh, mvp == NULL);
+        st = zl_check_geometry(mesh, mvp);
     if (st != ZL_OK)
         return st;
     src.mesh = mesh;

@@ -108,7 +108,7 @@ zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     zl_status st;
     if (f == NULL || state == NULL || f->planned)
         return ZL_ERR_ARG;
-    st = zl_check_mesh(mesh, mvp == NULL);
+    st = zl_check_geometry(mesh, mvp);
     if (st == ZL_OK)
         st = zl_state_check(state);
     if (st != ZL_OK)

@@ -139,5 +139,8 @@ void zl_fill_color_row(uint8_t *row, const zl_span_state *ss, zl_rgb c);
 
 /* ---- zl_draw.c */
 zl_status zl_check_mesh(const zl_mesh *m, int pixel_space);
+/* ---- zl_matrix.c: zl_check_mesh, then the transform limits of zline.h
+ * (LIMITS) when mvp is given; ZL_ERR_RANGE before anything is drawn. */
+zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp);
 
 #endif /* ZLINE_INTERNAL_H */

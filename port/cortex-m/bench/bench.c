@@ -1,0 +1,427 @@
+/*
+ * Cortex-M benchmark firmware (QEMU mps2-an386/an385): renders the scenes of
+ * scenes.h (bunny, fill, fill_gouraud, tris) in one mode, BENCH_FRAME (frame
+ * mode: zl_clear + zl_draw_mesh into a full 320x240 RGB565 target with a
+ * 16-bit depth buffer) or not (scanline mode: zl_frame_* with one-row bands),
+ * and prints exact instruction counts. Built once per mode and optimisation
+ * level (CMakeLists.txt: bench_frame_O2, bench_scanline_Os, ...).
+ *
+ * Counting. QEMU runs with -icount shift=6: every instruction advances
+ * virtual time by exactly 64 ns and the CMSDK TIMER0 (25 MHz, 40 ns a tick)
+ * counts them: k ticks after it was started, exactly ceil(5k / 8)
+ * instructions have run (k = floor(1.6 n), and 1.6 > 1 makes n unique).
+ * mark() stores the timer in stamps[]; an interval is the difference of two
+ * stamps minus the cost of mark() itself (an empty interval, calibrated at
+ * start; main checks the conversion on a run of exactly 1000 nops and stops
+ * if it is not exact). Every call site of mark() is a bare `bl mark`, so the
+ * calibration is exact for all of them. mark() is also the hook of the
+ * cycle-estimate plugin (tools/qemu-m4-timing), which prints its own counts
+ * at each entry of mark(): INTERVAL lines give the mark numbers.
+ *
+ * Phases in frame mode. The core is not instrumented: its pipeline runs
+ * every triangle through zl_tri_polygon (transform, clip, project),
+ * zl_tri_setup (cull, edge and attribute setup) and zl_tri_row (one span;
+ * see core/src/zl_internal.h). This firmware calls those same stages in
+ * three variants: polygons only, polygons + setup, polygons + setup + rows
+ * (which must give the same image as zl_draw_mesh, checked). Then
+ *   transform/clip = variant 1, setup = variant 2 - variant 1,
+ *   rasterisation = variant 3 - variant 2,
+ *   other = zl_draw_mesh - variant 3 (argument and mesh index checks).
+ * In scanline mode planning (vertex cache, classification, bucket sort) runs
+ * inside the first zl_frame_next_band, with row 0: "plan" is begin + add_mesh
+ * + that first call, "rows" the other 239 calls (triangle setup happens at
+ * activation, interleaved with the rows, so it is not separable there).
+ *
+ * Pixels written (frame build only, in a pass that is not timed): the
+ * variant-3 loop with the depth row compared before and after every span;
+ * with LESS and depth writes on, a fragment is written exactly when its
+ * depth value changes. Scanline mode writes the same fragments (the golden
+ * test checks the images are identical).
+ *
+ * Budgets: each scene's total is compared with BENCH_BUDGETS (budgets.txt,
+ * read through semihosting); the exit status counts the scenes over budget
+ * or without one, so CTest fails on a regression.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scenes.h"
+#include "zl_internal.h"
+#include "zl_port.h"
+
+#ifndef BENCH_TAG
+#define BENCH_TAG "bench"
+#endif
+
+#define W SCENE_W
+#define H SCENE_H
+
+/* ------------------------------------------------------------ counting */
+
+#define TIMER0_CTRL (*(volatile uint32_t *)0x40000000u)
+#define TIMER0_VALUE (*(volatile uint32_t *)0x40000004u)
+#define TIMER0_RELOAD (*(volatile uint32_t *)0x40000008u)
+
+#define MAX_STAMPS 1024
+static uint32_t stamps[MAX_STAMPS];
+static unsigned stamp_count;
+static uint32_t overhead; /* instructions of an empty interval */
+
+void mark(void);
+__attribute__((noinline)) void mark(void)
+{
+    uint32_t v = TIMER0_VALUE;
+    if (stamp_count < MAX_STAMPS)
+        stamps[stamp_count] = v;
+    stamp_count++;
+}
+
+/* Instructions since the timer started at stamp i (shift 6: see the top). */
+static uint32_t stamp_insns(unsigned i)
+{
+    uint64_t k = 0xFFFFFFFFu - stamps[i];
+    return (uint32_t)((5u * k + 7u) / 8u);
+}
+
+/* Instructions between stamps i and j, measurement cost removed. */
+static uint32_t between(unsigned i, unsigned j)
+{
+    return stamp_insns(j) - stamp_insns(i) - overhead;
+}
+
+static int timer_init(void)
+{
+    unsigned a, b, c, d;
+    TIMER0_CTRL = 0;
+    TIMER0_RELOAD = 0xFFFFFFFFu;
+    TIMER0_VALUE = 0xFFFFFFFFu;
+    TIMER0_CTRL = 1;
+    a = stamp_count;
+    mark();
+    mark();
+    overhead = 0;
+    overhead = between(a, a + 1);
+    /* 1000 nops: the conversion must give exactly 1000 */
+    c = stamp_count;
+    mark();
+    __asm__ volatile(".rept 1000\n nop\n .endr");
+    mark();
+    d = stamp_count - 1;
+    b = between(c, d);
+    if (b != 1000) {
+        printf("bench: 1000 nops counted as %lu (is QEMU running with -icount shift=6?)\n", (unsigned long)b);
+        return 1;
+    }
+    printf("# timer: exact (1000 nops = 1000), measurement overhead %lu instructions subtracted\n",
+           (unsigned long)overhead);
+    return 0;
+}
+
+static void interval(const char *scene_name, const char *key, unsigned i, unsigned j)
+{
+    printf("INTERVAL %s %s %s %lu %u %u\n", BENCH_TAG, scene_name, key, (unsigned long)between(i, j), i, j);
+}
+
+static uint32_t fnv1a(const void *p, size_t n, uint32_t h)
+{
+    const uint8_t *b = (const uint8_t *)p;
+    while (n--)
+        h = (h ^ *b++) * 16777619u;
+    return h;
+}
+
+/* --------------------------------------------------------------- budgets */
+
+static int check_budget(const char *scene_name, uint32_t total)
+{
+    char line[160], tag[40], name[40];
+    unsigned long budget = 0, b;
+    int found = 0;
+    FILE *f = fopen(BENCH_BUDGETS, "r");
+    if (f == NULL) {
+        printf("BUDGET FAIL %s %s: cannot read %s\n", BENCH_TAG, scene_name, BENCH_BUDGETS);
+        return 1;
+    }
+    while (fgets(line, sizeof line, f) != NULL)
+        if (sscanf(line, "%39s %39s %lu", tag, name, &b) == 3 && strcmp(tag, BENCH_TAG) == 0 &&
+            strcmp(name, scene_name) == 0) {
+            budget = b;
+            found = 1;
+        }
+    fclose(f);
+    /* budget proposal: the measurement plus 3 %, rounded up to 1000 */
+    printf("BUDGET_SUGGEST %s %s %lu\n", BENCH_TAG, scene_name,
+           (unsigned long)(((uint64_t)total * 103 / 100 + 999) / 1000 * 1000));
+    if (!found) {
+        printf("BUDGET FAIL %s %s: no budget in %s (measured %lu)\n", BENCH_TAG, scene_name, BENCH_BUDGETS,
+               (unsigned long)total);
+        return 1;
+    }
+    if (total > budget) {
+        printf("BUDGET FAIL %s %s: %lu instructions, budget %lu (+%.1f %%)\n", BENCH_TAG, scene_name,
+               (unsigned long)total, budget, 100.0 * ((double)total - (double)budget) / (double)budget);
+        return 1;
+    }
+    printf("BUDGET ok %s %s: %lu <= %lu\n", BENCH_TAG, scene_name, (unsigned long)total, budget);
+    return 0;
+}
+
+#ifdef BENCH_FRAME
+/* ------------------------------------------------------------ frame mode */
+
+static uint16_t color_buf[W * H];
+static uint16_t depth_buf[W * H];
+
+static void init_source(zl_source *src, const scene *s, const zl_context *ctx, zl_span_state *ss)
+{
+    memset(src, 0, sizeof *src);
+    src->mesh = &s->mesh;
+    src->mvp = &s->mvp;
+    src->state = &ctx->state;
+    src->cache = NULL;
+    src->width = W;
+    src->height = H;
+    zl_span_state_init(ss, &ctx->state, 1, 1, ZL_FORMAT_RGB565, W);
+}
+
+/* Variant 1: transform, clip, project every triangle. */
+static void stage_polygons(const scene *s, const zl_context *ctx)
+{
+    zl_source src;
+    zl_span_state ss;
+    uint32_t t;
+    init_source(&src, s, ctx, &ss);
+    for (t = 0; t < s->mesh.triangle_count; t++) {
+        zl_poly poly;
+        (void)zl_tri_polygon(&src, t, &poly);
+    }
+}
+
+/* Variant 2: and set up every fan triangle. */
+static void stage_setup(const scene *s, const zl_context *ctx)
+{
+    zl_source src;
+    zl_span_state ss;
+    uint32_t t;
+    init_source(&src, s, ctx, &ss);
+    for (t = 0; t < s->mesh.triangle_count; t++) {
+        zl_poly poly;
+        unsigned k;
+        if (!zl_tri_polygon(&src, t, &poly))
+            continue;
+        for (k = 1; k + 1 < poly.n; k++) {
+            zl_active tri;
+            zl_gouraud g;
+            (void)zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state, W, H);
+        }
+    }
+}
+
+/* Variant 3: and draw their rows: zl_draw_mesh's loop. With counts != NULL
+ * (untimed) also count set-up triangles and written pixels. */
+static void stage_rows(const scene *s, const zl_context *ctx, uint32_t *counts)
+{
+    static uint16_t before[W];
+    zl_source src;
+    zl_span_state ss;
+    uint32_t t;
+    init_source(&src, s, ctx, &ss);
+    for (t = 0; t < s->mesh.triangle_count; t++) {
+        zl_poly poly;
+        unsigned k;
+        if (!zl_tri_polygon(&src, t, &poly))
+            continue;
+        for (k = 1; k + 1 < poly.n; k++) {
+            zl_active tri;
+            zl_gouraud g;
+            int more;
+            if (!zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state, W, H))
+                continue;
+            if (counts != NULL)
+                counts[0]++;
+            do {
+                int32_t row = tri.row;
+                uint16_t *z = depth_buf + (size_t)row * W;
+                if (counts != NULL)
+                    memcpy(before, z, sizeof before);
+                more = zl_tri_row(&tri, &g, &ss, (uint8_t *)(color_buf + (size_t)row * W), z);
+                if (counts != NULL) {
+                    unsigned x;
+                    for (x = 0; x < W; x++)
+                        counts[1] += before[x] != z[x];
+                }
+            } while (more);
+        }
+    }
+}
+
+static int run_scene(const scene *s)
+{
+    zl_context ctx;
+    zl_target tg;
+    zl_rgb bg = {20, 24, 32};
+    unsigned m;
+    size_t base, stack;
+    uint32_t counts[2] = {0, 0}, h_draw, h_staged, total;
+    memset(&tg, 0, sizeof tg);
+    tg.color = color_buf;
+    tg.color_stride = W * 2;
+    tg.depth = depth_buf;
+    tg.depth_stride = W * 2;
+    tg.width = W;
+    tg.height = H;
+    tg.format = ZL_FORMAT_RGB565;
+    if (zl_init(&ctx, &tg) != ZL_OK)
+        return 1;
+    ctx.state = s->state;
+
+    /* one frame: clear + draw, with its stack high-water mark */
+    base = zl_port_stack_paint();
+    m = stamp_count;
+    mark();
+    zl_clear(&ctx, bg, 65535);
+    mark();
+    zl_draw_mesh(&ctx, &s->mesh, &s->mvp);
+    mark();
+    stack = zl_port_stack_used() - base;
+    h_draw = fnv1a(depth_buf, sizeof depth_buf, fnv1a(color_buf, sizeof color_buf, 2166136261u));
+    total = between(m, m + 2);
+    interval(s->name, "total", m, m + 2);
+    interval(s->name, "clear", m, m + 1);
+    interval(s->name, "draw", m + 1, m + 2);
+
+    /* the staged variants, each after a clear */
+    zl_clear(&ctx, bg, 65535);
+    m = stamp_count;
+    mark();
+    stage_polygons(s, &ctx);
+    mark();
+    stage_setup(s, &ctx);
+    mark();
+    stage_rows(s, &ctx, NULL);
+    mark();
+    interval(s->name, "v1_polygons", m, m + 1);
+    interval(s->name, "v2_setup", m + 1, m + 2);
+    interval(s->name, "v3_rows", m + 2, m + 3);
+    h_staged = fnv1a(depth_buf, sizeof depth_buf, fnv1a(color_buf, sizeof color_buf, 2166136261u));
+
+    /* counts, untimed */
+    zl_clear(&ctx, bg, 65535);
+    stage_rows(s, &ctx, counts);
+    printf("RESULT %s %s triangles %u\n", BENCH_TAG, s->name, (unsigned)s->mesh.triangle_count);
+    printf("RESULT %s %s drawn %lu\n", BENCH_TAG, s->name, (unsigned long)counts[0]);
+    printf("RESULT %s %s pixels %lu\n", BENCH_TAG, s->name, (unsigned long)counts[1]);
+    printf("RESULT %s %s stack %lu\n", BENCH_TAG, s->name, (unsigned long)stack);
+    printf("RESULT %s %s image %08lx\n", BENCH_TAG, s->name, (unsigned long)h_draw);
+    if (h_staged != h_draw) {
+        printf("bench: %s: the staged variant's image differs from zl_draw_mesh's\n", s->name);
+        return 1;
+    }
+    return check_budget(s->name, total);
+}
+
+#else
+/* --------------------------------------------------------- scanline mode */
+
+/* Large enough for every scene at one-row bands (exact need printed). */
+static uint64_t work[96 * 1024 / 8];
+
+static int config_for(const scene *s, zl_frame_config *cfg)
+{
+    zl_frame f;
+    zl_band b;
+    zl_status st;
+    zl_frame_needs_t needs;
+    zl_rgb bg = {0, 0, 0};
+    memset(cfg, 0, sizeof *cfg);
+    cfg->width = W;
+    cfg->height = H;
+    cfg->band_rows = 1;
+    cfg->format = ZL_FORMAT_RGB565;
+    cfg->color_buffers = 1;
+    cfg->gouraud = s->gouraud;
+    cfg->max_meshes = 1;
+    cfg->max_vertices = s->mesh.vertex_count;
+    cfg->max_triangles = s->mesh.triangle_count;
+    cfg->max_active = 256;
+    if (zl_frame_bytes(cfg) > sizeof work || zl_frame_begin(&f, cfg, work, sizeof work, bg, 65535) != ZL_OK ||
+        zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK)
+        return 1;
+    st = zl_frame_next_band(&f, &b);
+    if (st != ZL_OK && st != ZL_DONE && st != ZL_ERR_CAPACITY)
+        return 1;
+    needs = zl_frame_needs(&f);
+    cfg->max_triangles = needs.triangles > 0 ? needs.triangles : 1;
+    cfg->max_active = needs.active > 0 ? needs.active : 1;
+    return zl_frame_bytes(cfg) > sizeof work;
+}
+
+static int run_scene(const scene *s)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_band b;
+    zl_status st;
+    zl_rgb bg = {20, 24, 32};
+    unsigned m, rows = 0;
+    size_t base, stack, bytes;
+    uint32_t h = 2166136261u;
+    if (config_for(s, &cfg) != 0) {
+        printf("bench: %s: cannot plan the frame in %lu bytes\n", s->name, (unsigned long)sizeof work);
+        return 1;
+    }
+    bytes = zl_frame_bytes(&cfg);
+    base = zl_port_stack_paint();
+    m = stamp_count;
+    mark();
+    zl_frame_begin(&f, &cfg, work, bytes, bg, 65535);
+    zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state);
+    st = zl_frame_next_band(&f, &b);
+    mark();
+    while (st == ZL_OK && (st = zl_frame_next_band(&f, &b)) == ZL_OK)
+        ;
+    mark();
+    stack = zl_port_stack_used() - base;
+    interval(s->name, "total", m, m + 2);
+    interval(s->name, "plan_row0", m, m + 1);
+    interval(s->name, "rows", m + 1, m + 2);
+    if (st != ZL_DONE) {
+        printf("bench: %s: scanline rendering failed (%d)\n", s->name, (int)st);
+        return 1;
+    }
+    /* image hash, untimed: the same frame again, band by band */
+    zl_frame_begin(&f, &cfg, work, bytes, bg, 65535);
+    zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state);
+    while (zl_frame_next_band(&f, &b) == ZL_OK) {
+        h = fnv1a(b.color, W * 2, h);
+        rows++;
+    }
+    printf("RESULT %s %s triangles %u\n", BENCH_TAG, s->name, (unsigned)s->mesh.triangle_count);
+    printf("RESULT %s %s work_bytes %lu\n", BENCH_TAG, s->name, (unsigned long)bytes);
+    printf("RESULT %s %s stack %lu\n", BENCH_TAG, s->name, (unsigned long)stack);
+    printf("RESULT %s %s color_hash %08lx rows %u\n", BENCH_TAG, s->name, (unsigned long)h, rows);
+    return check_budget(s->name, between(m, m + 2));
+}
+#endif
+
+int main(void)
+{
+    int which, failed = 0;
+    if (timer_init() != 0)
+        return 100;
+    printf("# %s: marks are numbered from 0; INTERVAL tag scene key instructions mark_from mark_to\n", BENCH_TAG);
+    for (which = 0; which < SCENE_COUNT; which++) {
+        scene s;
+        if (which == SCENE_TETRA)
+            continue; /* golden test only */
+        if (scene_make(&s, which) != 0) {
+            printf("bench: scene %d: cannot build the camera\n", which);
+            failed++;
+            continue;
+        }
+        failed += run_scene(&s);
+    }
+    printf("# %s: %d failure(s)\n", BENCH_TAG, failed);
+    return failed;
+}
