@@ -37,7 +37,13 @@ typedef struct {
     zl_mat4 mvp;
     int use_mvp;
     zl_state state;
+    /* styled scenes: a style, and some meshes are lines or points instead */
+    zl_style style;
+    int is_lines;
+    zl_lines lines;
 } scene_mesh;
+
+static int styled; /* the scene uses styles and lines (test_random_styled_scenes...) */
 
 static scene_mesh scene[NMESH];
 static uint8_t frame_color[W * H * 3];
@@ -107,6 +113,28 @@ static void random_mesh(scene_mesh *m)
         zl_mat4_mul(&m->mvp, &proj, &view);
     }
     random_state(&m->state);
+    zl_style_default(&m->style);
+    m->is_lines = 0;
+    if (styled) {
+        m->style.polygon_front = (uint8_t)rand_range(0, 2);
+        m->style.polygon_back = (uint8_t)rand_range(0, 2);
+        m->style.point_size = (uint8_t)(rand_range(0, 2) == 0 ? rand_range(1, 9) : 1);
+        m->style.line_algo = (uint8_t)rand_range(0, 1);
+        if (rand_range(0, 1)) {
+            m->style.offset_factor = rand_range(-4 * ZL_FX_ONE, 4 * ZL_FX_ONE);
+            m->style.offset_units = rand_range(-2000 * ZL_FX_ONE, 2000 * ZL_FX_ONE);
+        }
+        if (rand_range(0, 2) == 0) {
+            m->is_lines = 1;
+            memset(&m->lines, 0, sizeof m->lines);
+            m->lines.positions = m->pos;
+            m->lines.indices = rand_range(0, 1) ? m->idx : NULL;
+            m->lines.colors = rand_range(0, 1) ? m->fcol : NULL;
+            m->lines.vertex_count = NV;
+            m->lines.count = (uint16_t)rand_range(0, NT); /* colours for NT primitives */
+            m->lines.prim = (uint8_t)rand_range(0, 3);
+        }
+    }
 }
 
 static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
@@ -125,8 +153,13 @@ static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, bgz));
     for (i = 0; i < NMESH; i++) {
+        const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
         ctx.state = scene[i].state;
-        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &scene[i].mesh, scene[i].use_mvp ? &scene[i].mvp : NULL));
+        ctx.style = scene[i].style;
+        if (scene[i].is_lines)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_lines(&ctx, &scene[i].lines, mvp));
+        else
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &scene[i].mesh, mvp));
     }
 }
 
@@ -143,6 +176,7 @@ static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
     c->max_vertices = NV * NMESH;
     c->max_triangles = NT * NMESH;
     c->max_active = NT * NMESH * 7;
+    c->styled = (uint8_t)styled;
 }
 
 typedef struct {
@@ -176,9 +210,17 @@ static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t
     config_for(&cfg, fmt, band);
     TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, bgz));
-    for (i = 0; i < NMESH; i++)
-        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &scene[i].mesh, scene[i].use_mvp ? &scene[i].mvp : NULL,
-                                                       &scene[i].state));
+    for (i = 0; i < NMESH; i++) {
+        const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
+        if (scene[i].is_lines)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_lines(&f, &scene[i].lines, mvp, &scene[i].state,
+                                                            &scene[i].style));
+        else if (styled)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &scene[i].mesh, mvp, &scene[i].state,
+                                                                  &scene[i].style));
+        else
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &scene[i].mesh, mvp, &scene[i].state));
+    }
     cc.fmt = fmt;
     cc.rows_seen = 0;
     cc.mismatches = 0;
@@ -206,6 +248,63 @@ static void test_random_scenes_identical_in_every_band_height(void)
     }
     /* The scenes must actually draw something for the comparison to mean anything. */
     TEST_ASSERT_GREATER_THAN(150L * W * H / 20, drawn);
+}
+
+/* The same with styles: polygon modes per face, offset, point sizes, both
+ * line algorithms, and lines, strips, loops and points between the meshes. */
+static void test_random_styled_scenes_identical_in_every_band_height(void)
+{
+    static const uint16_t bands[] = {1, 2, 7, H};
+    int scene_no, i;
+    long drawn = 0;
+    styled = 1;
+    for (scene_no = 0; scene_no < 200; scene_no++) {
+        zl_format fmt = (zl_format)rand_range(0, 2);
+        zl_rgb bg = {(uint8_t)next_rand(), (uint8_t)next_rand(), (uint8_t)next_rand()};
+        uint16_t bgz = (uint16_t)(rand_range(0, 1) ? 65535 : rand_range(0, 65535));
+        for (i = 0; i < NMESH; i++)
+            random_mesh(&scene[i]);
+        render_frame_mode(fmt, bg, bgz);
+        for (i = 0; i < W * H; i++)
+            drawn += frame_depth[i] != bgz;
+        for (i = 0; i < (int)(sizeof bands / sizeof bands[0]); i++)
+            render_and_compare(fmt, bands[i], bg, bgz);
+    }
+    styled = 0;
+    TEST_ASSERT_GREATER_THAN(200L * W * H / 40, drawn);
+}
+
+/* A non-default style needs a frame sized for it; the default does not. */
+static void test_styles_need_a_styled_frame(void)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_style sty;
+    zl_state st;
+    zl_rgb bg = {0, 0, 0};
+    zl_lines l;
+    styled = 0;
+    config_for(&cfg, ZL_FORMAT_RGB565, 1);
+    random_mesh(&scene[0]);
+    zl_state_default(&st);
+    zl_style_default(&sty);
+    memset(&l, 0, sizeof l);
+    l.positions = scene[0].pos;
+    l.vertex_count = NV;
+    l.count = 2;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &scene[0].mesh, NULL, &st, &sty));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &scene[0].mesh, NULL, &st, NULL));
+    sty.polygon_back = ZL_POLY_LINE;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_add_mesh_styled(&f, &scene[0].mesh, NULL, &st, &sty));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_add_lines(&f, &l, NULL, &st, NULL));
+    cfg.styled = 1;
+    TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) > 0);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &scene[0].mesh, NULL, &st, &sty));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_lines(&f, &l, NULL, &st, NULL));
+    sty.point_size = 0;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_frame_add_mesh_styled(&f, &scene[0].mesh, NULL, &st, &sty));
 }
 
 static void test_sizes_are_exact_and_checked(void)
@@ -304,6 +403,8 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_random_scenes_identical_in_every_band_height);
+    RUN_TEST(test_random_styled_scenes_identical_in_every_band_height);
+    RUN_TEST(test_styles_need_a_styled_frame);
     RUN_TEST(test_sizes_are_exact_and_checked);
     RUN_TEST(test_capacity_error_before_any_row);
     RUN_TEST(test_pull_form_and_double_buffering);

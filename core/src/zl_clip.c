@@ -360,3 +360,58 @@ int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out)
         shade(s, t, idx, out);
     return ok;
 }
+
+/* ------------------------------------------------------ lines and points */
+
+static void lvert_of(const zl_source *s, const zl_cvert *v, zl_lvert *out)
+{
+    zl_wvert w;
+    zl_project(s, v, &w);
+    out->x = w.x;
+    out->y = w.y;
+    out->z = w.z;
+}
+
+int zl_segment_make(const zl_source *s, uint16_t ia, uint16_t ib, int skip_a, int skip_b, zl_segment *out)
+{
+    zl_cvert a, b, t;
+    unsigned ca, cb, plane;
+    if (!zl_vertex_clip(s, ia, &a) || !zl_vertex_clip(s, ib, &b))
+        return 0;
+    ca = zl_outcode(s, &a);
+    cb = zl_outcode(s, &b);
+    if ((ca & cb) != 0)
+        return 0;
+    /* An end moved by clipping is no longer the shared vertex: keep its pixel. */
+    out->skip = (skip_a && ca == 0 ? 1u : 0u) | (skip_b && cb == 0 ? 2u : 0u);
+    for (plane = 0; plane < PLANE_COUNT; plane++) {
+        int64_t da, db;
+        if (!((ca | cb) & (1u << plane)))
+            continue;
+        da = plane_distance(s, plane, &a);
+        db = plane_distance(s, plane, &b);
+        if (da < 0 && db < 0)
+            return 0;
+        /* Measured from the inside end, as for triangles: A to B and B to A
+         * give the same point. */
+        if (da < 0) {
+            intersect(&b, &a, db, da, plane, &t);
+            a = t;
+        } else if (db < 0) {
+            intersect(&a, &b, da, db, plane, &t);
+            b = t;
+        }
+    }
+    lvert_of(s, &a, &out->a);
+    lvert_of(s, &b, &out->b);
+    return 1;
+}
+
+int zl_point_make(const zl_source *s, uint16_t idx, zl_lvert *out)
+{
+    zl_cvert v;
+    if (!zl_vertex_clip(s, idx, &v) || zl_outcode(s, &v) != 0)
+        return 0;
+    lvert_of(s, &v, out);
+    return 1;
+}

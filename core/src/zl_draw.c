@@ -39,6 +39,7 @@ zl_status zl_init(zl_context *ctx, const zl_target *target)
         return st;
     ctx->target = *target;
     zl_state_default(&ctx->state);
+    zl_style_default(&ctx->style);
     return ZL_OK;
 }
 
@@ -94,9 +95,14 @@ zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
     return ZL_OK;
 }
 
-/* Draw one set-up triangle into the target, all its rows. */
+/* Draw one set-up triangle, line or point into the target, all its rows. */
 static void draw_rows(const zl_context *ctx, zl_active *t, zl_gouraud *g, const zl_span_state *ss)
 {
+    if (t->kind != ZL_KIND_TRI) {
+        while (zl_prim_row(t, ss, color_row(&ctx->target, t->row), depth_row(&ctx->target, t->row)))
+            ;
+        return;
+    }
     while (zl_tri_row(t, g, ss, color_row(&ctx->target, t->row), depth_row(&ctx->target, t->row)))
         ;
 }
@@ -107,11 +113,14 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
+    unsigned n;
     if (ctx == NULL)
         return ZL_ERR_ARG;
     st = check_target(&ctx->target);
     if (st == ZL_OK)
         st = zl_state_check(&ctx->state);
+    if (st == ZL_OK)
+        st = zl_style_check(&ctx->style);
     if (st == ZL_OK)
         st = zl_check_geometry(mesh, mvp);
     if (st != ZL_OK)
@@ -129,13 +138,75 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
         unsigned k;
         if (!zl_tri_polygon(&src, t, &poly))
             continue;
-        for (k = 1; k + 1 < poly.n; k++) {
+        n = zl_tri_pieces(&src, &ctx->style, t, &poly);
+        for (k = 0; k < n; k++) {
             zl_active tri;
             zl_gouraud g;
-            if (zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state,
-                             src.width, src.height))
+            if (zl_tri_piece(&src, &ctx->style, t, &poly, k, &tri, &g))
                 draw_rows(ctx, &tri, &g, &ss);
         }
+    }
+    return ZL_OK;
+}
+
+zl_status zl_check_lines(const zl_lines *l)
+{
+    uint32_t i;
+    if (l == NULL)
+        return ZL_ERR_ARG;
+    if (l->prim > ZL_PRIM_POINTS)
+        return ZL_ERR_ARG;
+    if (l->count > 0 && l->positions == NULL)
+        return ZL_ERR_ARG;
+    for (i = 0; i < l->count; i++)
+        if ((l->indices != NULL ? l->indices[i] : i) >= l->vertex_count)
+            return ZL_ERR_RANGE;
+    return ZL_OK;
+}
+
+/* A mesh view of a zl_lines, for the vertex transform. */
+void zl_lines_mesh(const zl_lines *l, zl_mesh *m)
+{
+    m->positions = l->positions;
+    m->indices = NULL;
+    m->vertex_colors = NULL;
+    m->face_colors = NULL;
+    m->vertex_count = 0; /* nothing to cache: lines are transformed per segment */
+    m->triangle_count = (uint16_t)zl_lines_primitives(l);
+}
+
+zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *mvp)
+{
+    zl_source src;
+    zl_span_state ss;
+    zl_status st;
+    zl_mesh m;
+    uint32_t k, n;
+    if (ctx == NULL)
+        return ZL_ERR_ARG;
+    st = check_target(&ctx->target);
+    if (st == ZL_OK)
+        st = zl_state_check(&ctx->state);
+    if (st == ZL_OK)
+        st = zl_style_check(&ctx->style);
+    if (st == ZL_OK)
+        st = zl_check_lines(lines);
+    if (st != ZL_OK)
+        return st;
+    zl_lines_mesh(lines, &m);
+    src.mesh = &m;
+    src.mvp = mvp;
+    src.state = &ctx->state;
+    src.cache = NULL;
+    src.width = ctx->target.width;
+    src.height = ctx->target.height;
+    zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
+                       (zl_format)ctx->target.format, ctx->target.width);
+    n = zl_lines_primitives(lines);
+    for (k = 0; k < n; k++) {
+        zl_active rec;
+        if (zl_lines_record(&src, lines, &ctx->style, &ctx->state, k, &rec))
+            draw_rows(ctx, &rec, NULL, &ss);
     }
     return ZL_OK;
 }

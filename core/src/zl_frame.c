@@ -27,10 +27,17 @@ struct zl_frame_mesh {
     uint32_t tri_base, vert_base;
 };
 
+/* Per-mesh record of the styled features (only with cfg.styled). */
+typedef struct {
+    zl_style style;
+    zl_lines lines;
+    uint8_t is_lines;
+} zl_frame_ext;
+
 #define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
 
 typedef struct {
-    size_t meshes, vcache, row_start, visible, pool, gouraud, depth, color0, color1, total;
+    size_t meshes, vcache, row_start, visible, pool, gouraud, ext, depth, color0, color1, total;
 } layout;
 
 /* Offsets of every region of the work buffer. The one place that decides
@@ -57,7 +64,8 @@ static int layout_of(const zl_frame_config *c, layout *l)
     l->gouraud = l->pool + ALIGN8(pool);
     if (ALIGN8(pool) + gouraud < diff)
         gouraud = diff - ALIGN8(pool);
-    l->depth = l->gouraud + ALIGN8(gouraud);
+    l->ext = l->gouraud + ALIGN8(gouraud);
+    l->depth = l->ext + (c->styled ? ALIGN8((size_t)c->max_meshes * sizeof(zl_frame_ext)) : 0);
     l->color0 = l->depth + ALIGN8(band_px * 2);
     l->color1 = l->color0 + ALIGN8(band_px * bpp);
     l->total = l->color1 + (c->color_buffers == 2 ? ALIGN8(band_px * bpp) : 0);
@@ -95,6 +103,7 @@ zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, si
     f->visible = (uint16_t *)(void *)(w + l.visible);
     f->pool = (zl_active *)(void *)(w + l.pool);
     f->gouraud = cfg->gouraud ? w + l.gouraud : NULL;
+    f->ext = cfg->styled ? w + l.ext : NULL;
     f->depth_band = (uint16_t *)(void *)(w + l.depth);
     f->color_band[0] = w + l.color0;
     f->color_band[1] = cfg->color_buffers == 2 ? w + l.color1 : w + l.color0;
@@ -102,18 +111,58 @@ zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, si
     return ZL_OK;
 }
 
-zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state)
+static zl_frame_ext *ext_of(const zl_frame *f, unsigned mi)
+{
+    return f->ext ? (zl_frame_ext *)(void *)(f->ext + (size_t)mi * sizeof(zl_frame_ext)) : NULL;
+}
+
+static const zl_style *style_of(const zl_frame *f, unsigned mi)
+{
+    return f->ext ? &ext_of(f, mi)->style : NULL;
+}
+
+static int is_default_style(const zl_style *s)
+{
+    zl_style d;
+    zl_style_default(&d);
+    return s->polygon_front == d.polygon_front && s->polygon_back == d.polygon_back &&
+           s->point_size == d.point_size && s->line_algo == d.line_algo && s->offset_factor == d.offset_factor &&
+           s->offset_units == d.offset_units;
+}
+
+/* Record the style of mesh record mi (default when NULL), and lines. */
+static void set_ext(zl_frame *f, unsigned mi, const zl_style *style, const zl_lines *lines)
+{
+    zl_frame_ext *e = ext_of(f, mi);
+    if (e == NULL)
+        return;
+    if (style != NULL)
+        e->style = *style;
+    else
+        zl_style_default(&e->style);
+    e->is_lines = lines != NULL;
+    if (lines != NULL)
+        e->lines = *lines;
+}
+
+static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
+                            const zl_style *style, const zl_lines *lines)
 {
     zl_frame_mesh *m;
-    zl_status st;
+    zl_status st = ZL_OK;
     if (f == NULL || state == NULL || f->planned)
         return ZL_ERR_ARG;
-    st = zl_check_geometry(mesh, mvp);
+    if (lines == NULL)
+        st = zl_check_geometry(mesh, mvp);
     if (st == ZL_OK)
         st = zl_state_check(state);
+    if (st == ZL_OK && style != NULL)
+        st = zl_style_check(style);
     if (st != ZL_OK)
         return st;
     if (state->shading == ZL_SHADE_GOURAUD && !f->cfg.gouraud)
+        return ZL_ERR_CAPACITY;
+    if (!f->cfg.styled && (lines != NULL || (style != NULL && !is_default_style(style))))
         return ZL_ERR_CAPACITY;
     if (f->mesh_count >= f->cfg.max_meshes || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices ||
         f->triangle_total + mesh->triangle_count > 65535u)
@@ -127,10 +176,38 @@ zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     zl_span_state_init(&m->span, state, 1, 1, (zl_format)f->cfg.format, f->cfg.width);
     m->tri_base = f->triangle_total;
     m->vert_base = f->vertex_count;
+    set_ext(f, f->mesh_count, style, lines);
     f->mesh_count++;
     f->vertex_count += mesh->vertex_count;
     f->triangle_total += mesh->triangle_count;
     return ZL_OK;
+}
+
+zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state)
+{
+    return add_record(f, mesh, mvp, state, NULL, NULL);
+}
+
+zl_status zl_frame_add_mesh_styled(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
+                                   const zl_style *style)
+{
+    return add_record(f, mesh, mvp, state, style, NULL);
+}
+
+zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *mvp, const zl_state *state,
+                             const zl_style *style)
+{
+    zl_mesh m;
+    zl_status st = zl_check_lines(lines);
+    zl_style d;
+    if (st != ZL_OK)
+        return st;
+    if (style == NULL) {
+        zl_style_default(&d);
+        style = &d;
+    }
+    zl_lines_mesh(lines, &m);
+    return add_record(f, &m, mvp, state, style, lines);
 }
 
 static zl_cached_vertex *cache_of(const zl_frame *f)
@@ -154,12 +231,37 @@ static unsigned classify_source(const zl_frame *f, const zl_frame_mesh *m, uint3
 {
     zl_source s;
     zl_poly poly;
-    unsigned k, pieces = 0;
+    unsigned k, n, pieces = 0, mi = (unsigned)(m - f->meshes);
+    const zl_style *sty = style_of(f, mi);
     source_of(f, m, &s);
-    if (!zl_tri_polygon(&s, t, &poly))
-        return 0;
     *first = INT16_MAX;
     *end = 0;
+    if (sty != NULL && ext_of(f, mi)->is_lines) {
+        zl_active rec;
+        if (!zl_lines_record(&s, &ext_of(f, mi)->lines, sty, &m->state, t, &rec))
+            return 0;
+        *first = rec.row;
+        *end = rec.end;
+        return 1;
+    }
+    if (!zl_tri_polygon(&s, t, &poly))
+        return 0;
+    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL)) {
+        /* Line and point pieces: their own row ranges, from a full setup. */
+        n = zl_tri_pieces(&s, sty, t, &poly);
+        for (k = 0; k < n; k++) {
+            zl_active rec;
+            zl_gouraud g;
+            if (!zl_tri_piece(&s, sty, t, &poly, k, &rec, &g))
+                continue;
+            pieces++;
+            if (rec.row < *first)
+                *first = rec.row;
+            if (rec.end > *end)
+                *end = rec.end;
+        }
+        return pieces;
+    }
     for (k = 1; k + 1 < poly.n; k++) {
         int32_t a, b;
         if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, f->cfg.width, f->cfg.height,
@@ -264,22 +366,27 @@ static uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
 {
     uint8_t mi = mesh_of_id(f, id);
     const zl_frame_mesh *m = &f->meshes[mi];
+    const zl_style *sty = style_of(f, mi);
+    int lines = sty != NULL && ext_of(f, mi)->is_lines;
     zl_source s;
     zl_poly poly;
-    unsigned k;
+    unsigned k, n = 1;
     source_of(f, m, &s);
-    if (!zl_tri_polygon(&s, id - m->tri_base, &poly))
-        return link;
+    if (!lines) {
+        if (!zl_tri_polygon(&s, id - m->tri_base, &poly))
+            return link;
+        n = zl_tri_pieces(&s, sty, id - m->tri_base, &poly);
+    }
     while (*link != ZL_LIST_END && f->pool[*link].id < id)
         link = &f->pool[*link].next;
-    for (k = 1; k + 1 < poly.n; k++) {
+    for (k = 0; k < n; k++) {
         uint16_t slot = f->free_head;
         zl_active *a;
         if (slot == ZL_LIST_END)
             break; /* cannot happen: planning bounded the peak */
         a = &f->pool[slot];
-        if (!zl_tri_setup(a, gouraud_of(f, slot), &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &m->state,
-                          f->cfg.width, f->cfg.height))
+        if (lines ? !zl_lines_record(&s, &ext_of(f, mi)->lines, sty, &m->state, id - m->tri_base, a)
+                  : !zl_tri_piece(&s, sty, id - m->tri_base, &poly, k, a, gouraud_of(f, slot)))
             continue;
         f->free_head = a->next;
         a->id = id;
@@ -305,7 +412,8 @@ static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
             link = &a->next;
             continue;
         }
-        if (zl_tri_row(a, gouraud_of(f, slot), &f->meshes[a->mesh].span, crow, zrow)) {
+        if (a->kind == ZL_KIND_TRI ? zl_tri_row(a, gouraud_of(f, slot), &f->meshes[a->mesh].span, crow, zrow)
+                                   : zl_prim_row(a, &f->meshes[a->mesh].span, crow, zrow)) {
             link = &a->next;
         } else {
             *link = a->next;

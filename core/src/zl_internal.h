@@ -90,7 +90,25 @@ struct zl_active {
     uint8_t rgb[3];        /* flat colour */
     uint16_t id;           /* source triangle: the drawing order */
     uint16_t next;         /* active-list link (scanline mode) */
+    uint8_t kind;          /* ZL_KIND_*: in the tail padding, so the record does not grow */
 };
+
+/*
+ * Kinds of active record. Lines and points live in the same pool as
+ * triangles (so they sort with them by id) and reuse its fields:
+ *   line:  left      minor-axis stepper: left.x is the minor coordinate of
+ *                    the current pixel (an exact DDA, as a triangle edge)
+ *          ax        major coordinate of the current pixel
+ *          right.x   pixels left to plot; right.step major step (+1 or -1)
+ *          z.row     depth of the current pixel, Q32 of the stored scale;
+ *          z.dx      its change per major step
+ *          lower_is_left  1 when x is the major axis
+ *   point: left.x, right.x  first and end column (clamped); z.row depth Q32
+ *   both:  row, end, rgb, id, next, mesh as for triangles
+ */
+#define ZL_KIND_TRI 0
+#define ZL_KIND_LINE 1
+#define ZL_KIND_POINT 2
 
 /* How the spans of one draw write their pixels. */
 typedef struct {
@@ -137,10 +155,63 @@ void zl_span_state_init(zl_span_state *ss, const zl_state *st, int has_depth, in
 /* Fill width pixels of a row with a colour, honouring the colour mask. */
 void zl_fill_color_row(uint8_t *row, const zl_span_state *ss, zl_rgb c);
 
+/* Polygon offset of a triangle, Q20 depth steps: factor * max(|dz/dx|,
+ * |dz/dy|) + units; 0 when both are 0. */
+int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_style *sty);
+/* Move a set-up triangle's depth plane by an offset (Q20 steps). */
+void zl_tri_apply_offset(zl_active *t, int64_t offset);
+/* Plot the current row of a line or point record into the row buffers and
+ * step it; returns 0 when it has no rows left. */
+int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row);
+
+/* ---- zl_line.c */
+/* Window-space endpoint of a line or point, with its clipping flag. */
+typedef struct {
+    int32_t x, y;   /* subpixels */
+    uint32_t z;     /* Q16 of the stored depth scale, as zl_wvert */
+} zl_lvert;
+
+/* Segment of a zl_lines or polygon edge, ready for setup: both endpoints,
+ * which end pixels to leave out (bit 0: a, bit 1: b) and the colour. */
+typedef struct {
+    zl_lvert a, b;
+    unsigned skip;
+    zl_rgb rgb;
+} zl_segment;
+
+/* Transform and clip the segment between vertices ia and ib of a source
+ * (mesh positions) into window space; skip_a/skip_b ask to leave out an
+ * end pixel when that end is not moved by clipping. 0 if nothing is left. */
+int zl_segment_make(const zl_source *s, uint16_t ia, uint16_t ib, int skip_a, int skip_b, zl_segment *out);
+/* Transform a vertex for a point; 0 when it is outside a clip plane. */
+int zl_point_make(const zl_source *s, uint16_t idx, zl_lvert *out);
+/* Set up a line record for the target size: 1 if it has pixels in view. */
+int zl_line_setup(zl_active *t, const zl_segment *seg, unsigned algo, int64_t offset_q20,
+                  uint16_t width, uint16_t height);
+/* Set up a point record: 1 if it has pixels in view. */
+int zl_point_setup(zl_active *t, const zl_lvert *p, zl_rgb rgb, unsigned size, int64_t offset_q20,
+                   uint16_t width, uint16_t height);
+
+/* Primitive `k` of a zl_lines: its record (line or point), 0 if it shows
+ * nothing. Segments after the first of a strip or loop leave out their
+ * first pixel. */
+int zl_lines_record(const zl_source *s, const zl_lines *l, const zl_style *sty, const zl_state *st,
+                    uint32_t k, zl_active *out);
+
+/* Piece `k` of a triangle drawn by polygon mode (fill pieces are the fan
+ * of its polygon; line pieces its 3 edges; point pieces its 3 vertices).
+ * Returns the number of pieces in *count on k == 0 and sets up piece k into
+ * t (and g): 1 if it has pixels. */
+unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly);
+int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
+                 zl_active *t, zl_gouraud *g);
+
 /* ---- zl_draw.c */
 zl_status zl_check_mesh(const zl_mesh *m, int pixel_space);
 /* ---- zl_matrix.c: zl_check_mesh, then the transform limits of zline.h
  * (LIMITS) when mvp is given; ZL_ERR_RANGE before anything is drawn. */
 zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp);
+zl_status zl_check_lines(const zl_lines *l);
+void zl_lines_mesh(const zl_lines *l, zl_mesh *m);
 
 #endif /* ZLINE_INTERNAL_H */

@@ -185,6 +185,7 @@ int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert 
         mid = first;
     if (mid > end)
         mid = end;
+    t->kind = ZL_KIND_TRI;
     t->row = (int16_t)first;
     t->mid = (int16_t)mid;
     t->end = (int16_t)end;
@@ -477,4 +478,101 @@ void zl_fill_color_row(uint8_t *row, const zl_span_state *ss, zl_rgb c)
     pack_color((zl_format)ss->format, c.r, c.g, c.b, pix);
     for (i = 0; i < ss->width; i++)
         put_pixel(row + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+}
+
+/* ------------------------------------------------------ polygon offset */
+
+int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_style *sty)
+{
+    /* units * r: r is one stored step, 2^20 in Q20; units is Q16.16. */
+    int64_t off;
+    if (sty == NULL || (sty->offset_factor == 0 && sty->offset_units == 0))
+        return 0;
+    off = (int64_t)sty->offset_units * (1 << (ZL_ATTR_FRAC - 16));
+    if (sty->offset_factor != 0) {
+        /* The depth plane's gradients as plane_setup solves them (Cramer). */
+        const unsigned sh = ZL_SUB_BITS + (ZL_ATTR_FRAC - 16);
+        const int64_t limit = (int64_t)65535 << ZL_ATTR_FRAC; /* the whole range per pixel */
+        int64_t dx1 = (int64_t)b->x - a->x, dy1 = (int64_t)b->y - a->y;
+        int64_t dx2 = (int64_t)c->x - a->x, dy2 = (int64_t)c->y - a->y;
+        int64_t da1 = (int64_t)b->z - a->z, da2 = (int64_t)c->z - a->z;
+        int64_t ga = da1 * dy2 - da2 * dy1, gb = dx1 * da2 - dx2 * da1, cr = dx1 * dy2 - dx2 * dy1;
+        int64_t mx, my, m;
+        if (cr == 0)
+            return off;
+        if (cr < 0)
+            cr = -cr;
+        ga = ga < 0 ? -ga : ga;
+        gb = gb < 0 ? -gb : gb;
+        mx = muldiv_pow2(ga, sh, cr, limit);
+        my = muldiv_pow2(gb, sh, cr, limit);
+        m = mx > my ? mx : my;
+        /* |factor| <= 2^24 and m <= 2^36: the product fits 64 bits. */
+        off += zl_floor_shift64((int64_t)sty->offset_factor * m, 16);
+    }
+    return off;
+}
+
+void zl_tri_apply_offset(zl_active *t, int64_t offset)
+{
+    const int64_t top = (int64_t)65535 << 16;
+    int64_t o16 = zl_floor_shift64(offset, ZL_ATTR_FRAC - 16);
+    t->z.row += offset;
+    t->zlo = (uint32_t)clamp64((int64_t)t->zlo + o16, 0, top);
+    t->zhi = (uint32_t)clamp64((int64_t)t->zhi + o16, 0, top);
+}
+
+/* ------------------------------------------------------ lines and points */
+
+/* Stored depth of a Q32 line depth, clamped to the range. */
+static inline uint32_t line_depth(int64_t zq32)
+{
+    int64_t d = zl_floor_shift64(zq32 + ((int64_t)1 << 31), 32);
+    return (uint32_t)clamp64(d, 0, 65535);
+}
+
+static inline void plot(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t x, uint32_t d,
+                        const uint8_t *pix)
+{
+    unsigned func = ss->func;
+    if (x < 0 || x >= ss->width)
+        return;
+    if (func != ZL_ALWAYS && !depth_pass(func, d, zrow[x]))
+        return;
+    if (ss->zwrite)
+        zrow[x] = (uint16_t)d;
+    if (ss->bpp != 0)
+        put_pixel(crow + (size_t)x * ss->bpp, ss->bpp, pix, ss->keep);
+}
+
+int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row)
+{
+    uint8_t pix[3];
+    pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
+    if (t->kind == ZL_KIND_POINT) {
+        uint32_t d = line_depth(t->z.row);
+        int32_t x;
+        for (x = t->left.x; x < t->right.x; x++)
+            plot(ss, color_row, depth_row, x, d, pix);
+        t->row++;
+        return t->row < t->end;
+    }
+    /* Line: the pixels of this row, walking the major axis. A y-major line
+     * has one per row; an x-major one a run, until its minor coordinate
+     * (the row) changes. */
+    for (;;) {
+        int32_t x = t->lower_is_left ? t->ax : t->left.x;
+        plot(ss, color_row, depth_row, x, line_depth(t->z.row), pix);
+        if (--t->right.x == 0) {
+            t->row = t->end;
+            return 0;
+        }
+        t->ax += t->right.step;
+        edge_step(&t->left);
+        t->z.row += t->z.dx;
+        if (!t->lower_is_left || t->left.x != t->row)
+            break;
+    }
+    t->row++;
+    return t->row < t->end;
 }

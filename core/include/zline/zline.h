@@ -49,6 +49,45 @@
  *   byte-identical colour and depth.
  * ===========================================================================
  *
+ * LIMITS (enforced: an input beyond one returns an error before any byte
+ * is written; inputs at a limit render by the contract above. Tested at
+ * each edge in tests/test_limits.c; the README's "What bad input gets"
+ * lists every error.)
+ *
+ *   target width, height     1 .. ZL_MAX_DIM (4096)            ZL_ERR_SIZE
+ *   colour stride (bytes)    >= width * bytes per pixel        ZL_ERR_SIZE
+ *   depth stride (bytes)     >= width * 2, even                ZL_ERR_SIZE
+ *   RGB565 colour, depth     2-byte aligned address, even      ZL_ERR_ARG
+ *                            colour stride
+ *   zl_frame work buffer     >= zl_frame_bytes(cfg) bytes      ZL_ERR_SIZE
+ *                            8-byte aligned                    ZL_ERR_ARG
+ *   vertices, triangles      0 .. 65535 per mesh (uint16), every ZL_ERR_RANGE
+ *                            index < vertex_count
+ *   with a matrix (mvp):     every matrix entry and every      ZL_ERR_RANGE
+ *                            model coordinate of the mesh within
+ *                            +-16384.0 (raw +-2^30), and every
+ *                            vertex's clip-space position
+ *                            mvp * (p, 1) inside Q16.16
+ *                            (checked for all vertices of the mesh by
+ *                            zl_draw_mesh and zl_frame_add_mesh, whether
+ *                            a triangle uses them or not)
+ *   without a matrix         any Q16.16 position: x, y up to +-32768
+ *                            pixels, z is clipped to 0 .. 1
+ *   window coordinates       exact (the contract) within the guard band,
+ *                            ZL_GUARD_PX (131072) pixels beyond each edge
+ *                            of the target; geometry reaching further, or
+ *                            behind the eye, is clipped, never dropped
+ *   smallest triangle        none: a triangle one subpixel (1/16 pixel)
+ *                            wide covers the pixel whose centre it holds
+ *                            by the top-left rule; zero area covers nothing
+ *   triangles per frame      sum of triangle_count over the    ZL_ERR_CAPACITY
+ *                            meshes of a zl_frame <= 65535
+ *   render state             enum fields in range              ZL_ERR_ARG
+ *                            light_dir within +-1.0 per        ZL_ERR_RANGE
+ *                            component (when light_on)
+ *   NULL pointers            context, target, mesh, arrays     ZL_ERR_ARG
+ *                            with a non-zero count
+ *
  * Memory: the library never allocates. The caller owns the context, every
  * buffer (with strides in bytes) and, in scanline mode, one work buffer
  * whose exact size zl_frame_bytes() returns. There is no global state: two
@@ -90,8 +129,10 @@ void zl_mat4_rotate_y(zl_mat4 *out, zl_angle a);
 void zl_mat4_rotate_z(zl_mat4 *out, zl_angle a);
 /*
  * View matrix looking from eye towards target (right-handed, camera looks
- * down its -z). ZL_ERR_RANGE when eye == target or up is parallel to the
- * view direction.
+ * down its -z); up need not be unit length. ZL_ERR_RANGE when eye ==
+ * target, up is zero or parallel to the view direction, target - eye leaves
+ * Q16.16, or the eye is so far from the origin that the translation does not
+ * fit Q16.16.
  */
 zl_status zl_mat4_look_at(zl_mat4 *out, zl_vec3 eye, zl_vec3 target, zl_vec3 up);
 /*
@@ -218,8 +259,123 @@ typedef struct {
 /* Defaults: depth test on, LESS, depth write on, all channels, no culling,
  * CCW front, flat white, no lighting. */
 void zl_state_default(zl_state *s);
-/* ZL_ERR_ARG when an enum field is out of range. */
+/* ZL_ERR_ARG when an enum field is out of range; ZL_ERR_RANGE when light_on
+ * is set and a light_dir component is outside +-1.0. */
 zl_status zl_state_check(const zl_state *s);
+
+/* ------------------------------------------------- lines, points, style */
+
+/*
+ * LINE RULE (tests/test_lines.c checks it pixel for pixel)
+ *
+ * Endpoints: a vertex at window position (x, y), after the 1/16 pixel
+ *   snapping, is in pixel (X, Y) = (floor(x), floor(y)): the pixel that
+ *   contains it, a position on a pixel border belonging to the pixel right
+ *   of / below it.
+ * Pixels: a segment from (X0, Y0) to (X1, Y1), DX = X1 - X0, DY = Y1 - Y0,
+ *   covers exactly max(|DX|, |DY|) + 1 pixels, both endpoints included:
+ *     x-major (|DX| >= |DY|, diagonals included): one pixel per column X
+ *       between X0 and X1, in the row nearest to Y0 + (X - X0) DY / DX;
+ *     y-major (|DY| > |DX|): one pixel per row Y between Y0 and Y1, in the
+ *       column nearest to X0 + (Y - Y0) DX / DY;
+ *   an exact half rounds down (to the smaller row or column). The set
+ *   depends only on the two endpoints, not on their order: A to B covers
+ *   the same pixels as B to A.
+ * Algorithms: ZL_LINE_BRESENHAM computes exactly this with a decision
+ *   variable (an integer error term: no multiplication or division per
+ *   pixel). ZL_LINE_DDA steps the minor coordinate as a 16.16 fixed-point
+ *   value, s = DY/DX rounded to 1/65536, from the endpoint with the smaller
+ *   major coordinate, and takes floor(value + 1/2). It differs from the rule
+ *   (1) at exact halves, which it rounds up, and (2) where the slope's
+ *   rounding, at most u / 2^17 pixel after u steps, carries the value across
+ *   a half: possible only when u * (major length) >= 2^16, so never for
+ *   lines shorter than 256 pixels, and for its far endpoint only when the
+ *   major length is 2^16 or more. It is symmetric as well.
+ * Strips and loops (ZL_PRIM_LINE_STRIP, ZL_PRIM_LINE_LOOP) plot each shared
+ *   vertex once: every segment after the first leaves out the pixel of its
+ *   first vertex (unless clipping moved that vertex), and a loop's closing
+ *   segment also the pixel of its last one. ZL_PRIM_LINES segments are
+ *   independent and keep both endpoints.
+ * Depth: window depth is linear in screen space (see Pseudodepth), so it is
+ *   interpolated linearly along the major axis between the endpoint depths
+ *   (plus the style's offset units) and rounded; it is within +-1 of the
+ *   exact value, and depth-tested and written as for triangles.
+ * Clipping: as triangles (near, far, the guard band); a segment inside the
+ *   guard band covers exactly the in-viewport pixels of the whole segment.
+ *
+ * POINTS: a point of size N (1 .. ZL_MAX_POINT_SIZE) at (x, y) covers the
+ *   N x N pixels whose centres lie in (x - N/2, x + N/2] x (y - N/2, y + N/2];
+ *   for N = 1 that is the pixel containing the vertex, as for a line
+ *   endpoint. A point whose vertex is outside a clip plane is not drawn (as
+ *   OpenGL). Its depth is the vertex depth (plus the offset units).
+ *
+ * POLYGON MODES (as glPolygonMode): after culling, a triangle facing the
+ *   viewer is drawn as style.polygon_front says, one facing away as
+ *   style.polygon_back: ZL_POLY_FILL (the raster contract above),
+ *   ZL_POLY_LINE (its three edges v0-v1, v1-v2, v2-v0 as independent
+ *   depth-tested segments, each clipped on its own; edges made by clipping
+ *   are not drawn) or ZL_POLY_POINT (its vertices as points). Facing comes
+ *   from the winding of the projected (clipped) triangle; zero-area
+ *   triangles draw nothing in any mode.
+ *
+ * POLYGON OFFSET: every fragment of a triangle, in all three modes, has its
+ *   depth moved by
+ *       offset = factor * max(|dz/dx|, |dz/dy|) + units * r
+ *   where the slopes are the triangle's depth plane in stored depth steps
+ *   per pixel and r = 1 stored step (1/65535 of the depth range); factor and
+ *   units are Q16.16 and the sum is computed in integers (Q20 steps). Lines
+ *   and points drawn with zl_draw_lines have no slope: they move by
+ *   units * r only. The result is clamped to the depth range.
+ */
+#define ZL_MAX_POINT_SIZE 64
+
+typedef enum {
+    ZL_PRIM_LINES = 0,      /* independent segments: indices 2k, 2k + 1 */
+    ZL_PRIM_LINE_STRIP = 1, /* a polyline through every index */
+    ZL_PRIM_LINE_LOOP = 2,  /* a closed polyline */
+    ZL_PRIM_POINTS = 3      /* one point per index */
+} zl_prim;
+
+typedef enum { ZL_LINE_BRESENHAM = 0, ZL_LINE_DDA = 1 } zl_line_algo;
+typedef enum { ZL_POLY_FILL = 0, ZL_POLY_LINE = 1, ZL_POLY_POINT = 2 } zl_polygon_mode;
+
+/*
+ * Lines or points in caller memory (every array may be const in flash).
+ * positions: 3 Q16.16 per vertex, as zl_mesh (model space, or pixel space
+ *   with a NULL matrix). indices: `count` of them, each < vertex_count, or
+ *   NULL for the vertices in order. colors (optional): 3 bytes (r, g, b) per
+ *   primitive (segment or point, in order); without them the state's colour.
+ */
+typedef struct {
+    const zl_fixed *positions;
+    const uint16_t *indices;
+    const uint8_t *colors;
+    uint16_t vertex_count;
+    uint16_t count;
+    uint8_t prim; /* zl_prim */
+} zl_lines;
+
+/* Number of segments or points a zl_lines describes (0 if prim is unknown). */
+uint32_t zl_lines_primitives(const zl_lines *l);
+
+/*
+ * How primitives are drawn, beside zl_state: polygon modes, offset, lines
+ * and points. Kept apart from zl_state so that scenes that do not use these
+ * features pay nothing for them in scanline mode.
+ */
+typedef struct {
+    uint8_t polygon_front;  /* zl_polygon_mode of front faces */
+    uint8_t polygon_back;   /* zl_polygon_mode of back faces */
+    uint8_t point_size;     /* 1 .. ZL_MAX_POINT_SIZE pixels */
+    uint8_t line_algo;      /* zl_line_algo */
+    zl_fixed offset_factor; /* polygon offset, Q16.16, -256.0 .. 256.0 */
+    zl_fixed offset_units;  /* polygon offset, Q16.16 depth steps (any value) */
+} zl_style;
+
+/* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset. */
+void zl_style_default(zl_style *s);
+/* ZL_ERR_ARG for an unknown enum value, ZL_ERR_RANGE for a number outside its range. */
+zl_status zl_style_check(const zl_style *s);
 
 /* ------------------------------------------------------- frame mode */
 
@@ -236,9 +392,10 @@ typedef struct {
 typedef struct {
     zl_target target;
     zl_state state;
+    zl_style style; /* polygon modes, offset, lines and points */
 } zl_context;
 
-/* Check the target and set the default state. */
+/* Check the target and set the default state and style. */
 zl_status zl_init(zl_context *ctx, const zl_target *target);
 /* Clear colour (respecting the colour mask) and depth (respecting the
  * depth write mask), as glClear does. */
@@ -249,6 +406,9 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth);
  * drawn if any argument is invalid (checked before the first pixel).
  */
 zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp);
+/* Draw lines or points with ctx->state (depth, masks, colour) and ctx->style
+ * (point size, line algorithm, offset units), by the LINE RULE above. */
+zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *mvp);
 
 /* -------------------------------------------------- scanline and band mode */
 
@@ -282,6 +442,9 @@ typedef struct {
     uint32_t max_vertices;
     uint32_t max_triangles;
     uint32_t max_active;
+    /* Features beyond the flat/Gouraud mesh; 0 leaves the layout as it was. */
+    uint8_t styled;         /* reserve a zl_style per mesh: needed by zl_frame_add_lines
+                               and by zl_frame_add_mesh_styled with a non-default style */
 } zl_frame_config;
 
 /* A finished band: rows first_row .. first_row + rows - 1. */
@@ -322,6 +485,7 @@ typedef struct {
     uint16_t *visible;       /* visible triangle ids sorted by first row */
     zl_active *pool;         /* max_active active-triangle records */
     uint8_t *gouraud;        /* max_active Gouraud gradient records or NULL */
+    uint8_t *ext;            /* max_meshes style records (cfg.styled) or NULL */
     uint16_t active_head;    /* first active record, sorted by triangle id */
     uint16_t free_head;
     uint16_t *depth_band;
@@ -338,6 +502,17 @@ zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, si
 /* Submit a mesh with its transform (NULL: pixel space) and state (copied). */
 zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp,
                             const zl_state *state);
+/* The same with a style (polygon modes, offset, points); NULL means the
+ * default style. Needs cfg.styled unless the style is the default. Lines and
+ * points of polygon modes count in max_active as up to 3 records per
+ * triangle. */
+zl_status zl_frame_add_mesh_styled(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp,
+                                   const zl_state *state, const zl_style *style);
+/* Submit lines or points (needs cfg.styled). Each segment or point is one
+ * primitive in submission order with the triangles (it counts in the 65535
+ * primitives of a frame, in max_triangles and in max_active). */
+zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *mvp,
+                             const zl_state *state, const zl_style *style);
 /*
  * Pull form: render the next band and describe it in *band. Returns ZL_OK
  * with a band, ZL_DONE when all rows are out, or an error. With two colour
