@@ -156,8 +156,8 @@ typedef struct {
  * M * (v, 1) with 64-bit accumulation, rounded once. Matrix entries and
  * positions must lie within +-16384.0 (raw +-2^30) so the sum of products
  * fits 64 bits; ZL_ERR_RANGE if an input is outside or a component of the
- * result leaves Q16.16. Meshes whose vertices fail this lose the triangles
- * that use them.
+ * result leaves Q16.16. zl_draw_mesh and zl_frame_add_mesh refuse a mesh
+ * with such a vertex (ZL_ERR_RANGE, see LIMITS) before drawing anything.
  */
 zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out);
 
