@@ -1,9 +1,11 @@
 #!/bin/sh
 # Install what zline's build, tests and tools need on Debian (12 or later).
-# Everything comes from Debian's own archive.
+# Everything comes from Debian's own archive. clang and libclang-rt-dev (libFuzzer,
+# sanitizer runtimes) build the fuzz targets; clang-tidy and cppcheck are the
+# static analysers of tools/lint/run.sh.
 set -eu
 pkgs="cmake make gcc libc6-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
-qemu-system-arm netpbm valgrind"
+qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck"
 missing=""
 for p in $pkgs; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

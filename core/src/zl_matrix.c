@@ -1,5 +1,5 @@
 /* 4x4 matrices in Q16.16: building, multiplying and applying them. */
-#include "zline/zline.h"
+#include "zl_internal.h"
 
 #define M(r, c) m[(r) * 4 + (c)]
 #define ZL_COORD_LIMIT ((int32_t)1 << 30) /* +-16384.0: keeps 4 products inside int64 */
@@ -97,38 +97,54 @@ static zl_vec3 cross(zl_vec3 a, zl_vec3 b)
     return r;
 }
 
-static zl_fixed dot(zl_vec3 a, zl_vec3 b)
+/* a . b rounded; ZL_ERR_RANGE when it leaves +-32767.99998 (so that its
+ * negation fits as well). */
+static zl_status dot(zl_vec3 a, zl_vec3 b, zl_fixed *out)
 {
     int64_t d = (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
-    return zl_fx_sat(zl_floor_shift64(d + 32768, 16));
+    d = zl_floor_shift64(d + 32768, 16);
+    if (d > INT32_MAX || d < -INT32_MAX)
+        return ZL_ERR_RANGE;
+    *out = (zl_fixed)d;
+    return ZL_OK;
 }
 
 zl_status zl_mat4_look_at(zl_mat4 *out, zl_vec3 eye, zl_vec3 target, zl_vec3 up)
 {
-    zl_vec3 f, s, u, dir;
+    zl_vec3 f, s, u, dir, up1;
+    int64_t dx = (int64_t)target.x - eye.x, dy = (int64_t)target.y - eye.y, dz = (int64_t)target.z - eye.z;
+    zl_fixed ts, tu, tf;
     if (out == NULL)
         return ZL_ERR_ARG;
-    dir.x = zl_fx_sat((int64_t)target.x - eye.x);
-    dir.y = zl_fx_sat((int64_t)target.y - eye.y);
-    dir.z = zl_fx_sat((int64_t)target.z - eye.z);
-    if (normalize(dir, &f) != ZL_OK)
+    /* The view direction must be representable, and so must the translation
+     * (the eye's distance from the origin along each camera axis). */
+    if (dx > INT32_MAX || dx < INT32_MIN || dy > INT32_MAX || dy < INT32_MIN || dz > INT32_MAX || dz < INT32_MIN)
         return ZL_ERR_RANGE;
-    if (normalize(cross(f, up), &s) != ZL_OK)
+    dir.x = (zl_fixed)dx;
+    dir.y = (zl_fixed)dy;
+    dir.z = (zl_fixed)dz;
+    /* up is normalised first, so the cross product of two unit vectors
+     * cannot saturate (a unit up gives itself back exactly). */
+    if (normalize(dir, &f) != ZL_OK || normalize(up, &up1) != ZL_OK)
+        return ZL_ERR_RANGE;
+    if (normalize(cross(f, up1), &s) != ZL_OK)
         return ZL_ERR_RANGE;
     u = cross(s, f);
+    if (dot(s, eye, &ts) != ZL_OK || dot(u, eye, &tu) != ZL_OK || dot(f, eye, &tf) != ZL_OK)
+        return ZL_ERR_RANGE;
     zl_mat4_identity(out);
     out->M(0, 0) = s.x;
     out->M(0, 1) = s.y;
     out->M(0, 2) = s.z;
-    out->M(0, 3) = -dot(s, eye);
+    out->M(0, 3) = -ts;
     out->M(1, 0) = u.x;
     out->M(1, 1) = u.y;
     out->M(1, 2) = u.z;
-    out->M(1, 3) = -dot(u, eye);
+    out->M(1, 3) = -tu;
     out->M(2, 0) = -f.x;
     out->M(2, 1) = -f.y;
     out->M(2, 2) = -f.z;
-    out->M(2, 3) = dot(f, eye);
+    out->M(2, 3) = tf;
     return ZL_OK;
 }
 
@@ -222,6 +238,59 @@ zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out)
         if (acc > INT32_MAX || acc < INT32_MIN)
             return ZL_ERR_RANGE;
         *res[row] = (zl_fixed)acc;
+    }
+    return ZL_OK;
+}
+
+/*
+ * The transform limits of zline.h's LIMITS block, checked once per draw
+ * before any pixel: with a matrix, every entry and every vertex coordinate
+ * within +-16384.0, and no vertex whose clip-space position leaves Q16.16.
+ * A bound from the largest coordinate per axis settles the last part for
+ * ordinary scenes in one pass over the positions; only when the bound could
+ * overflow is every vertex transformed. Pixel space (no matrix) takes any
+ * Q16.16 position: x, y are clipped to the guard band, z to 0..1.
+ */
+zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp)
+{
+    zl_status st = zl_check_mesh(m, mvp == NULL);
+    int64_t big[4] = {0, 0, 0, ZL_FX_ONE};
+    uint32_t i, n;
+    int row, k, exact = 0;
+    if (st != ZL_OK || mvp == NULL)
+        return st;
+    for (i = 0; i < 16; i++)
+        if (!in_coord_range(mvp->m[i]))
+            return ZL_ERR_RANGE;
+    n = (uint32_t)m->vertex_count * 3u;
+    for (i = 0; i < n; i += 3) {
+        for (k = 0; k < 3; k++) {
+            zl_fixed v = m->positions[i + (uint32_t)k];
+            int64_t a = v < 0 ? -(int64_t)v : v;
+            if (!in_coord_range(v))
+                return ZL_ERR_RANGE;
+            if (a > big[k])
+                big[k] = a;
+        }
+    }
+    /* |row . (p, 1)| <= sum |m_rk| big_k: four products below 2^60 each. */
+    for (row = 0; row < 4; row++) {
+        int64_t bound = 0;
+        for (k = 0; k < 4; k++) {
+            int64_t e = mvp->m[row * 4 + k];
+            bound += (e < 0 ? -e : e) * big[k];
+        }
+        if (zl_floor_shift64(bound + 32768, 16) > INT32_MAX)
+            exact = 1;
+    }
+    for (i = 0; exact && i < n; i += 3) {
+        zl_vec3 v;
+        zl_vec4 c;
+        v.x = m->positions[i];
+        v.y = m->positions[i + 1];
+        v.z = m->positions[i + 2];
+        if (zl_transform_point(mvp, v, &c) != ZL_OK)
+            return ZL_ERR_RANGE;
     }
     return ZL_OK;
 }

@@ -126,7 +126,7 @@ zl_status zl_vis_add_mesh(zl_vis *v, const zl_mesh *mesh, const zl_mat4 *mvp, co
     zl_status st;
     if (v == NULL || state == NULL || v->planned)
         return ZL_ERR_ARG;
-    st = zl_check_mesh(mesh, mvp == NULL);
+    st = zl_check_geometry(mesh, mvp);
     if (st == ZL_OK)
         st = zl_state_check(state);
     if (st != ZL_OK)
