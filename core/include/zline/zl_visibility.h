@@ -51,11 +51,14 @@ extern "C" {
 
 /*
  * ZL_BSP_MAX_DEPTH: longest root-to-leaf path a BSP tree may have; the
- * traversal keeps an explicit stack of this many 4-byte entries on the C
- * stack (no recursion). tools/bsp refuses to write a deeper tree.
+ * traversal keeps an explicit stack of this many uint16 node indices on the
+ * C stack (no recursion): 512 bytes by default. Trees of scanned meshes are
+ * deep (tools/bsp makes the benchmark bunny 136 levels deep, choosing
+ * splitters for few splits rather than balance); tools/bsp refuses to write
+ * a tree deeper than this.
  */
 #ifndef ZL_BSP_MAX_DEPTH
-#define ZL_BSP_MAX_DEPTH 64
+#define ZL_BSP_MAX_DEPTH 256
 #endif
 #if ZL_BSP_MAX_DEPTH < 1 || ZL_BSP_MAX_DEPTH > 1024
 #error "ZL_BSP_MAX_DEPTH must be in 1..1024"
