@@ -1,0 +1,153 @@
+#!/bin/sh
+# Cortex-M4 benchmark tables for docs/CORTEX_M.md (issue 4): builds the
+# benchmark firmware (bench.c) at -O2 and -Os in frame and scanline mode, runs
+# each under QEMU mps2-an386 with -icount shift=6 (exact instruction counts
+# from TIMER0) and, when the host compiler can build it, the m4timing plugin
+# (a Cortex-M4 cycle ESTIMATE), and prints markdown tables.
+#
+#   port/cortex-m/bench/measure.sh [--update-budgets] [BUILD_DIR]
+#
+# BUILD_DIR defaults to build/cortex-m4-bench. --update-budgets rewrites
+# budgets.txt from this measurement (+3 %, rounded up to 1000).
+set -eu
+cd "$(dirname "$0")/../../.."
+update=0
+if [ "${1:-}" = --update-budgets ]; then update=1; shift; fi
+build=${1:-build/cortex-m4-bench}
+bench=$build/port/cortex-m/bench
+out=$build/measure
+mkdir -p "$out"
+
+cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
+    -DZLINE_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os >/dev/null
+
+plugin=$out/m4timing.so
+if ! ${CC:-cc} -std=c99 -O2 -shared -fPIC -o "$plugin" tools/qemu-m4-timing/m4timing.c 2>"$out/plugin.log"; then
+    echo "measure.sh: cannot build the cycle-estimate plugin (see $out/plugin.log): instructions only" >&2
+    plugin=
+fi
+
+tags="frame-O2 frame-Os scanline-O2 scanline-Os"
+status=0
+for tag in $tags; do
+    mode=${tag%-*}; opt=${tag#*-}
+    elf=$bench/bench_${mode}_${opt}.elf
+    mark=$(arm-none-eabi-nm "$elf" | awk '$3 == "mark" { print "0x" $1 }')
+    rm -f "$out/$tag.marks"
+    set -- qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+        -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6
+    if [ -n "$plugin" ]; then
+        set -- "$@" -plugin "$plugin,mark=$mark,out=$out/$tag.marks"
+    fi
+    "$@" -kernel "$elf" >"$out/$tag.txt" || status=1
+    arm-none-eabi-size -A "$elf" >"$out/$tag.size"
+done
+[ $status -eq 0 ] || echo "measure.sh: a benchmark reported a failure (BUDGET FAIL?): see $out/*.txt" >&2
+
+if [ $update -eq 1 ]; then
+    { sed -n '/^#/p' port/cortex-m/bench/budgets.txt
+      cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort; } >"$out/budgets.txt"
+    cp "$out/budgets.txt" port/cortex-m/bench/budgets.txt
+    echo "measure.sh: budgets.txt updated" >&2
+fi
+
+# All results as "tag scene key value" lines (cycles from the plugin's marks:
+# an interval's cycles are the difference of its marks minus the cost of the
+# empty interval per mark inside it, the same correction as the timer's).
+for tag in $tags; do
+    awk -v tag="$tag" -v marks="$out/$tag.marks" '
+        BEGIN { while ((getline l < marks) > 0) { split(l, f, " "); if (f[1] == "MARK") { mi[f[2]] = f[3]; mc[f[2]] = f[4] } } }
+        /^# timer:/ { for (i = 1; i <= NF; i++) if ($i == "overhead") ov = $(i + 1) }
+        $1 == "RESULT" { print tag, $3, $4, $5 }
+        $1 == "INTERVAL" {
+            print tag, $3, $4, $5
+            if ((0 in mi) && ($6 in mc) && ($7 in mc)) {
+                n = $7 - $6
+                e_i = mi[1] - mi[0]; e_c = mc[1] - mc[0]
+                pi = mi[$7] - mi[$6] - n * e_i + (n - 1) * ov
+                print tag, $3, $4 "_cycles", mc[$7] - mc[$6] - n * e_c
+                if (pi != $5) print tag, $3, $4 "_plugin_insn_mismatch", pi - $5
+            }
+        }' "$out/$tag.txt"
+    # flash and RAM of the ELF, and the core's share of flash from the map
+    awk -v tag="$tag" '$1 == ".text" { t = $2 } $1 == ".data" { d = $2 } $1 == ".bss" { b = $2 }
+        END { print tag, "-", "flash_elf", t; print tag, "-", "ram_data_bss", d + b }' "$out/$tag.size"
+    mode=${tag%-*}; opt=${tag#*-}
+    awk -v tag="$tag" -v lib="libzline_$opt.a" '
+        function hex(h,   i, v) { v = 0; h = tolower(substr(h, 3)); for (i = 1; i <= length(h); i++) v = v * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1; return v }
+        /^Linker script and memory map/ { on = 1 }
+        on && /^ \.(text|rodata)/ { sec = 1; if (NF >= 4) { size = $3; file = $4 } else next }
+        on && sec && NF == 3 && $1 ~ /^0x/ { size = $2; file = $3 }
+        on && sec && file != "" {
+            if (index(file, lib)) core += hex(size)
+            else if (file ~ /_mesh\.c\.obj/) mesh += hex(size)
+            sec = 0; file = ""
+        }
+        END { print tag, "-", "flash_core", core; print tag, "-", "flash_meshes", mesh }' \
+        "$bench/bench_${mode}_${opt}.elf.map"
+done >"$out/results.txt"
+
+R=$out/results.txt
+get() { awk -v t="$1" -v s="$2" -v k="$3" '$1 == t && $2 == s && $3 == k { print $4; exit }' "$R"; }
+num() { awk -v v="$1" 'BEGIN { if (v == "") print "n/a"; else { s = sprintf("%d", v); o = ""; while (length(s) > 3) { o = "," substr(s, length(s) - 2) o; s = substr(s, 1, length(s) - 3) } print s o } }'; }
+div() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || b == 0) print "n/a"; else printf "%.1f", a / b }'; }
+scenes="bunny fill fill_gouraud tris"
+
+echo "### Instructions per frame (exact: QEMU -icount, TIMER0), Cortex-M4 (mps2-an386)"
+echo
+echo "One frame: frame mode = zl_clear + zl_draw_mesh; scanline mode = zl_frame_begin + zl_frame_add_mesh + 240 one-row bands. Cycles: m4timing plugin, an ESTIMATE (Cortex-M4 TRM table, P = 2, division 12)."
+echo
+echo "| scene | mode | opt | instructions | per triangle submitted | per pixel written | cycles (ESTIMATE) | estimated cycles / instruction |"
+echo "|---|---|---|---:|---:|---:|---:|---:|"
+for s in $scenes; do
+    tris=$(get frame-O2 $s triangles); px=$(get frame-O2 $s pixels)
+    for tag in $tags; do
+        mode=${tag%-*}; opt=${tag#*-}
+        t=$(get $tag $s total); c=$(get $tag $s total_cycles)
+        echo "| $s | $mode | -$opt | $(num "$t") | $(div "$t" "$tris") | $(div "$t" "$px") | $(num "$c") | $(awk -v a="$c" -v b="$t" 'BEGIN { if (a == "") print "n/a"; else printf "%.2f", a / b }') |"
+    done
+done
+echo
+echo "### Frame mode by phase (instructions; the stages run separately, see bench.c)"
+echo
+echo "| scene | opt | triangles | drawn | pixels written | clear | transform/clip | setup | rasterisation | other | transform/clip per triangle | setup per drawn triangle | rasterisation per pixel |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for s in $scenes; do
+    for opt in O2 Os; do
+        tag=frame-$opt
+        v1=$(get $tag $s v1_polygons); v2=$(get $tag $s v2_setup); v3=$(get $tag $s v3_rows)
+        draw=$(get $tag $s draw); clear=$(get $tag $s clear)
+        tris=$(get $tag $s triangles); drawn=$(get $tag $s drawn); px=$(get $tag $s pixels)
+        setup=$((v2 - v1)); raster=$((v3 - v2)); other=$((draw - v3))
+        echo "| $s | -$opt | $tris | $drawn | $(num $px) | $(num $clear) | $(num $v1) | $(num $setup) | $(num $raster) | $(num $other) | $(div $v1 $tris) | $(div $setup $drawn) | $(div $raster $px) |"
+    done
+done
+echo
+echo "### Scanline mode by phase (instructions)"
+echo
+echo "| scene | opt | plan + row 0 | rows 1..239 | total | rows per pixel written | work buffer bytes |"
+echo "|---|---|---:|---:|---:|---:|---:|"
+for s in $scenes; do
+    for opt in O2 Os; do
+        tag=scanline-$opt
+        echo "| $s | -$opt | $(num "$(get $tag $s plan_row0)") | $(num "$(get $tag $s rows)") | $(num "$(get $tag $s total)") | $(div "$(get $tag $s rows)" "$(get frame-O2 $s pixels)") | $(num "$(get $tag $s work_bytes)") |"
+    done
+done
+echo
+echo "### Flash and RAM (bytes; arm-none-eabi-size and the link map)"
+echo
+echo "| firmware | flash: core (.text+.rodata) | flash: meshes | flash: whole ELF | RAM: .data+.bss | stack high-water (deepest scene) |"
+echo "|---|---:|---:|---:|---:|---:|"
+for tag in $tags; do
+    stack=$(awk -v t="$tag" '$1 == t && $3 == "stack" && $4 > m { m = $4 } END { print m }' "$R")
+    echo "| bench_${tag%-*}_${tag#*-} | $(num "$(get $tag - flash_core)") | $(num "$(get $tag - flash_meshes)") | $(num "$(get $tag - flash_elf)") | $(num "$(get $tag - ram_data_bss)") | $(num "$stack") |"
+done
+mism=$(awk '$3 ~ /_plugin_insn_mismatch$/' "$R")
+echo
+if [ -n "$plugin" ] && [ -z "$mism" ]; then
+    echo "Check: the plugin's instruction count equals the timer's for every interval."
+elif [ -n "$mism" ]; then
+    echo "Plugin and timer instruction counts differ: $mism"
+fi
+exit $status
