@@ -17,7 +17,8 @@ static zl_status check_target(const zl_target *t)
     if (t->color != NULL) {
         if (t->color_stride < (int32_t)(t->width * bpp))
             return ZL_ERR_SIZE;
-        if (bpp == 2 && (!aligned2(t->color) || (t->color_stride & 1)))
+        /* Native RGB565 is uint16 data; RGB565_BE is a byte stream, any alignment. */
+        if (t->format == ZL_FORMAT_RGB565 && (!aligned2(t->color) || (t->color_stride & 1)))
             return ZL_ERR_ARG;
     }
     if (t->depth != NULL) {

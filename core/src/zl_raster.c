@@ -310,19 +310,15 @@ static inline uint32_t depth_of(uint32_t zq)
     return d;
 }
 
+/* Write one pixel's bytes, keeping the masked-off bits of the old pixel.
+ * Byte by byte, so RGB565_BE rows (a byte stream) may have any alignment;
+ * the fast span loop below uses 16-bit stores when it can. */
 static inline void put_pixel(uint8_t *p, unsigned bpp, const uint8_t *pix, const uint8_t *keep)
 {
-    if (bpp == 2) {
-        uint16_t v, k, old;
-        memcpy(&v, pix, 2);
-        memcpy(&k, keep, 2);
-        old = *(uint16_t *)(void *)p;
-        *(uint16_t *)(void *)p = (uint16_t)((old & k) | v);
-    } else {
-        p[0] = (uint8_t)((p[0] & keep[0]) | pix[0]);
-        p[1] = (uint8_t)((p[1] & keep[1]) | pix[1]);
-        p[2] = (uint8_t)((p[2] & keep[2]) | pix[2]);
-    }
+    p[0] = (uint8_t)((p[0] & keep[0]) | (pix[0] & (uint8_t)~keep[0]));
+    p[1] = (uint8_t)((p[1] & keep[1]) | (pix[1] & (uint8_t)~keep[1]));
+    if (bpp == 3)
+        p[2] = (uint8_t)((p[2] & keep[2]) | (pix[2] & (uint8_t)~keep[2]));
 }
 
 /* The common case in its own loop: RGB565 (either byte order), all channels,
@@ -347,7 +343,7 @@ static void span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, in
 {
     unsigned func = ss->func, bpp = ss->bpp;
     int32_t i;
-    if (bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+    if (bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 &&
         (func == ZL_LESS || func == ZL_LEQUAL)) {
         uint16_t pixel;
         memcpy(&pixel, pix, 2);
@@ -384,7 +380,7 @@ static void span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow,
     uint32_t r = c[0], g = c[1], b = c[2];
     unsigned func = ss->func, bpp = ss->bpp;
     int32_t i;
-    uint8_t pix[3];
+    uint8_t pix[3] = {0, 0, 0};
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
         if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
@@ -444,7 +440,7 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
         }
         span_gouraud(ss, crow, zrow, x1 - x0, z, dz, c, dc);
     } else {
-        uint8_t pix[3];
+        uint8_t pix[3] = {0, 0, 0};
         pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
         span_flat(ss, crow, zrow, x1 - x0, z, dz, pix);
     }
@@ -473,7 +469,7 @@ int zl_tri_row(zl_active *t, zl_gouraud *g, const zl_span_state *ss, uint8_t *co
 
 void zl_fill_color_row(uint8_t *row, const zl_span_state *ss, zl_rgb c)
 {
-    uint8_t pix[3];
+    uint8_t pix[3] = {0, 0, 0};
     uint16_t i;
     pack_color((zl_format)ss->format, c.r, c.g, c.b, pix);
     for (i = 0; i < ss->width; i++)
@@ -547,7 +543,7 @@ static inline void plot(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, 
 
 int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row)
 {
-    uint8_t pix[3];
+    uint8_t pix[3] = {0, 0, 0};
     pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
     if (t->kind == ZL_KIND_POINT) {
         uint32_t d = line_depth(t->z.row);

@@ -8,6 +8,10 @@
  *   corner of the top-left pixel. Pixel (i, j) has its centre at
  *   (i + 0.5, j + 0.5). Row 0 is the top row.
  *
+ * Viewport: clip-space (x, y, w) maps to window x = (x/w + 1) * width / 2 and
+ *   y = (1 - y/w) * height / 2 (OpenGL's mapping, rows counted downwards);
+ *   with a NULL matrix positions are window coordinates already.
+ *
  * Snapping: vertex x and y snap to 1/16 pixel (2^ZL_SUBPIXEL_BITS), rounded
  *   to nearest; a value exactly half-way rounds towards +infinity (right or
  *   down).
@@ -329,6 +333,43 @@ zl_status zl_state_check(const zl_state *s);
  */
 #define ZL_MAX_POINT_SIZE 64
 
+/*
+ * TEXTURES. A texture is RGB565 texels (native byte order) in caller memory,
+ * const allowed (flash), width and height powers of two 1 .. 4096, row r at
+ * texels + r * stride. Texture coordinates (style.texcoords) are 2 Q16.16
+ * per vertex, (s, t), 1.0 = the texture's width or height; they are carried
+ * through clipping with the vertex. A pixel takes the texel containing its
+ * coordinate (nearest sampling: texel floor(s * width), floor(t * height)),
+ * wrapped (ZL_WRAP_REPEAT: modulo the size) or clamped to the edge texels
+ * (ZL_WRAP_CLAMP), times the lighting intensity when the state's light is on.
+ *
+ * Mapping: ZL_TEX_AFFINE interpolates (s, t) linearly in screen space, as
+ * Gouraud colour (cheap, wrong under perspective). ZL_TEX_PERSPECTIVE
+ * interpolates s/w, t/w and 1/w linearly in screen space (w the clip w of
+ * each vertex, scaled per triangle so the nearest vertex has 1/w = 2^24) and
+ * divides per pixel: one integer reciprocal R = 2^44 / (1/w) and two
+ * multiplications. The texel coordinate is then within |c| / 2^16 + 1/128
+ * texel of the exact perspective value c (coordinates are kept in 1/256
+ * texel, |c| < 32768 texels). style.tex_every = N (2, 4, .. 64) computes the
+ * exact value only every N pixels of a span (from its first pixel) and steps
+ * linearly between: the error grows by at most N^2/8 times the second
+ * derivative of the coordinate along the row (a fraction of a texel for
+ * N = 16 on the floor of tests/test_texture.c, where it is measured).
+ *
+ * style.persp_gouraud interpolates Gouraud colours the same perspective-
+ * correct way (colour/w and 1/w) instead of linearly in screen space.
+ * Textures and perspective Gouraud need cfg.textured in scanline mode.
+ */
+typedef enum { ZL_WRAP_REPEAT = 0, ZL_WRAP_CLAMP = 1 } zl_wrap;
+typedef enum { ZL_TEX_AFFINE = 0, ZL_TEX_PERSPECTIVE = 1 } zl_tex_mapping;
+
+typedef struct {
+    const uint16_t *texels; /* RGB565, native byte order */
+    uint16_t width, height; /* powers of two, 1 .. 4096 */
+    uint16_t stride;        /* texels from one row to the next, >= width */
+    uint8_t wrap_s, wrap_t; /* zl_wrap */
+} zl_texture;
+
 typedef enum {
     ZL_PRIM_LINES = 0,      /* independent segments: indices 2k, 2k + 1 */
     ZL_PRIM_LINE_STRIP = 1, /* a polyline through every index */
@@ -370,9 +411,15 @@ typedef struct {
     uint8_t line_algo;      /* zl_line_algo */
     zl_fixed offset_factor; /* polygon offset, Q16.16, -256.0 .. 256.0 */
     zl_fixed offset_units;  /* polygon offset, Q16.16 depth steps (any value) */
+    const zl_texture *texture;  /* NULL: no texture */
+    const zl_fixed *texcoords;  /* 2 Q16.16 per vertex of the mesh (with a texture) */
+    uint8_t tex_mapping;        /* zl_tex_mapping */
+    uint8_t tex_every;          /* perspective: exact every N pixels, N = 2..64 a power of two; 0 or 1: every pixel */
+    uint8_t persp_gouraud;      /* 1: perspective-correct Gouraud colours */
 } zl_style;
 
-/* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset. */
+/* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset, no
+ * texture, screen-linear Gouraud. */
 void zl_style_default(zl_style *s);
 /* ZL_ERR_ARG for an unknown enum value, ZL_ERR_RANGE for a number outside its range. */
 zl_status zl_style_check(const zl_style *s);
@@ -381,9 +428,12 @@ zl_status zl_style_check(const zl_style *s);
 
 /* A full-frame render target: colour and depth in caller memory. */
 typedef struct {
-    void *color;           /* width x height pixels of `format`, or NULL for none */
-    int32_t color_stride;  /* bytes from one row to the next, >= width * bpp */
-    uint16_t *depth;       /* width x height depth values, or NULL for none */
+    void *color;           /* width x height pixels of `format`, or NULL for none;
+                              RGB565 needs 2-byte alignment (ZL_ERR_ARG otherwise),
+                              RGB565_BE and RGB888 are byte streams: any alignment */
+    int32_t color_stride;  /* bytes from one row to the next, >= width * bpp
+                              (even for RGB565) */
+    uint16_t *depth;       /* width x height depth values (2-byte aligned), or NULL */
     int32_t depth_stride;  /* bytes, >= width * 2 and even */
     uint16_t width, height; /* 1 .. ZL_MAX_DIM */
     uint8_t format;         /* zl_format */
@@ -445,6 +495,8 @@ typedef struct {
     /* Features beyond the flat/Gouraud mesh; 0 leaves the layout as it was. */
     uint8_t styled;         /* reserve a zl_style per mesh: needed by zl_frame_add_lines
                                and by zl_frame_add_mesh_styled with a non-default style */
+    uint8_t textured;       /* reserve texture / perspective planes per active record
+                               (textures, perspective-correct Gouraud) */
 } zl_frame_config;
 
 /* A finished band: rows first_row .. first_row + rows - 1. */
@@ -486,6 +538,7 @@ typedef struct {
     zl_active *pool;         /* max_active active-triangle records */
     uint8_t *gouraud;        /* max_active Gouraud gradient records or NULL */
     uint8_t *ext;            /* max_meshes style records (cfg.styled) or NULL */
+    uint8_t *tex;            /* max_active texture plane records (cfg.textured) or NULL */
     uint16_t active_head;    /* first active record, sorted by triangle id */
     uint16_t free_head;
     uint16_t *depth_band;
