@@ -188,6 +188,14 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
         zl_vis_row row;
         int64_t py = 2 * s * y + s;
         int rc;
+        /* Retire finished pieces first, so the pool never holds more than
+         * planning counted (order does not matter: ties go by id). */
+        for (b = 0; b < count;) {
+            if (pool[b].end <= y)
+                pool[b] = pool[--count];
+            else
+                b++;
+        }
         /* Activate the edge-table bucket of this row. */
         for (b = begin; b < end; b++) {
             zl_source src;
@@ -208,13 +216,6 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
                 r->rgb[2] = poly.flat.b;
                 count++;
             }
-        }
-        /* Retire finished pieces (order does not matter: ties go by id). */
-        for (b = 0; b < count;) {
-            if (pool[b].end <= y)
-                pool[b] = pool[--count];
-            else
-                b++;
         }
         for (i = 0; i < v->cfg.width; i++) {
             int64_t px = 2 * s * i + s;
