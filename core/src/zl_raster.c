@@ -430,6 +430,12 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
     dz = step32(t->z.dx, ZL_ATTR_FRAC - 14);
     crow = crow ? crow + (size_t)x0 * ss->bpp : NULL;
     zrow = zrow ? zrow + x0 : NULL;
+    /* A NULL row is an absent buffer, for which zl_span_state_init chose
+     * bpp 0 (colour) or ZL_ALWAYS without depth write (depth): said here
+     * too, so that no path to a pixel write can see a NULL row (static
+     * analysis, tools/lint/run.sh). */
+    if ((crow == NULL && ss->bpp != 0) || (zrow == NULL && (ss->zwrite || ss->func != ZL_ALWAYS)))
+        return;
     if (g != NULL && ss->gouraud) {
         uint32_t c[3], dc[3];
         int k;
