@@ -217,7 +217,7 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
                 count++;
             }
         }
-        for (i = 0; i < v->cfg.width; i++) {
+        for (i = 0; i < (uint16_t)v->cfg.width; i++) { /* width <= ZL_MAX_DIM, checked at begin */
             int64_t px = 2 * s * i + s;
             uint64_t z1 = UINT64_MAX, z2 = UINT64_MAX;
             const zl_vis_rtri *best = NULL;
