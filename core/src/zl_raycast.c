@@ -184,7 +184,8 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
     clear_rgb[2] = clear.b;
     zl_vis_pack((zl_format)v->cfg.format, clear_rgb, bg);
     for (y = 0; y < v->cfg.height; y++) {
-        uint16_t begin = y == 0 ? 0 : v->row_start[y - 1], end = v->row_start[y], b;
+        uint16_t begin = y == 0 ? 0 : v->row_start[y - 1], end = v->row_start[y];
+        uint32_t b;
         zl_vis_row row;
         int64_t py = 2 * s * y + s;
         int rc;
