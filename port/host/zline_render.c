@@ -15,11 +15,22 @@
 #include "zl_obj.h"
 #include "zl_pnm.h"
 #include "zline/zline.h"
+#include "zline/zl_visibility.h"
+#include "bsp_build.h"
 
 #define EXIT_USAGE 2
 #define CLEAR_DEPTH 65535u
 /* Returned by the band callback when writing a row failed. */
 #define BAND_WRITE_FAILED 100
+
+/* Help of --visibility (issue #6), printed after usage_text (C99 caps a string at 4095). */
+static const char vis_usage_text[] =
+    "\nVisibility (docs/VISIBILITY.md)\n"
+    "  --visibility V       hidden surfaces by zbuffer (default, with --mode), aet\n"
+    "                       (scan-line, no depth memory), painter (depth sort), bsp\n"
+    "                       (tree built here, drawn back to front) or raycast (the\n"
+    "                       reference); all but zbuffer draw flat colours and take\n"
+    "                       no --depth, --shade depth/vertex, --pixel-space, --mode\n";
 
 static const char usage_text[] =
     "Usage: zline-render [options] model.obj out.ppm\n"
@@ -112,6 +123,7 @@ typedef struct {
     zl_rgb color, bg;
     int pixel_space, normalize;
     unsigned band_rows; /* 0: frame mode */
+    int visibility;     /* 0: z-buffer, else a zl_visibility.h method (VIS_*) */
     zl_format format;
     int stats;
 } options;
@@ -307,6 +319,7 @@ static int parse_options(int argc, char **argv, options *o)
     } while (0)
         if (FLAG("--help") || FLAG("-h")) {
             fputs(usage_text, stdout);
+            fputs(vis_usage_text, stdout);
             return -1;
         } else if (FLAG("--size")) {
             unsigned long w, h;
@@ -445,6 +458,16 @@ static int parse_options(int argc, char **argv, options *o)
             } else {
                 return usage_error("--mode: expected frame, scanline or band=N, got '%s'", val);
             }
+        } else if (FLAG("--visibility")) {
+            static const char *const vis_names[] = {"zbuffer", "aet", "painter", "bsp", "raycast"};
+            int k;
+            NEEDS_VALUE;
+            for (k = 0; k < 5 && strcmp(val, vis_names[k]) != 0; k++)
+                ;
+            if (k == 5)
+                return usage_error("--visibility: expected zbuffer, aet, painter, bsp or raycast, got '%s'",
+                                   val);
+            o->visibility = k;
         } else if (FLAG("--stats")) {
             NO_VALUE;
             o->stats = 1;
@@ -476,6 +499,10 @@ static int parse_options(int argc, char **argv, options *o)
     }
     if (o->band_rows > o->height)
         o->band_rows = o->height;
+    if (o->visibility != 0 && (o->depth_out != NULL || o->shade != SHADE_FLAT || o->pixel_space ||
+                               o->band_rows != 0))
+        return usage_error("--visibility other than zbuffer draws flat colours from a camera: it takes no "
+                           "--depth, --shade depth/vertex, --pixel-space or --mode");
     return 0;
 }
 
@@ -792,6 +819,130 @@ static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
     return 1;
 }
 
+/* ------------------------------------------------- --visibility (issue #6) */
+
+static int vis_row_out(void *user, const zl_vis_row *row)
+{
+    output *out = (output *)user;
+    static const uint16_t no_depth[1] = {0};
+    return write_rows(out, row->color, 0, no_depth, 0, 1) ? 0 : BAND_WRITE_FAILED;
+}
+
+/* The eye in model space: the point the projection maps to x = y = w = 0. */
+static zl_vec3 eye_of(const zl_mat4 *m)
+{
+    double a[3][4], p[3];
+    int r, c, k, rows[3] = {0, 1, 3};
+    zl_vec3 e;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 4; c++)
+            a[r][c] = m->m[rows[r] * 4 + c] / 65536.0;
+    for (c = 0; c < 3; c++) { /* Gauss-Jordan with partial pivoting on [A | -b] */
+        int piv = c;
+        for (r = c + 1; r < 3; r++)
+            if (fabs(a[r][c]) > fabs(a[piv][c]))
+                piv = r;
+        for (k = 0; k < 4; k++) {
+            double t = a[c][k];
+            a[c][k] = a[piv][k];
+            a[piv][k] = t;
+        }
+        for (r = 0; r < 3; r++)
+            if (r != c && a[c][c] != 0) {
+                double f = a[r][c] / a[c][c];
+                for (k = 0; k < 4; k++)
+                    a[r][k] -= f * a[c][k];
+            }
+    }
+    for (r = 0; r < 3; r++)
+        p[r] = a[r][r] != 0 ? -a[r][3] / a[r][r] : 0;
+    e.x = (zl_fixed)floor(p[0] * 65536.0 + 0.5);
+    e.y = (zl_fixed)floor(p[1] * 65536.0 + 0.5);
+    e.z = (zl_fixed)floor(p[2] * 65536.0 + 0.5);
+    return e;
+}
+
+static int render_vis(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
+                      output *out)
+{
+    unsigned bpp = zl_format_bytes(o->format);
+    void *work = NULL, *frame = NULL;
+    zl_vis_target tg;
+    zl_status st = ZL_OK;
+    int ok = 0, r;
+    memset(&tg, 0, sizeof tg);
+    tg.color_stride = (int32_t)(o->width * bpp);
+    tg.width = (uint16_t)o->width;
+    tg.height = (uint16_t)o->height;
+    tg.format = (uint8_t)o->format;
+    if (o->visibility == 3) {
+        bsp_tree tree;
+        zl_bsp bsp;
+        if (bsp_build(&tree, mesh->positions, mesh->vertex_count, mesh->indices, mesh->triangle_count, NULL) != 0)
+            return 0;
+        bsp = bsp_view(&tree);
+        frame = malloc((size_t)tg.color_stride * o->height);
+        tg.color = frame;
+        if (frame != NULL)
+            st = zl_bsp_draw(&bsp, mvp, eye_of(mvp), state, &tg, o->bg, ZL_BSP_BACK_TO_FRONT, NULL, 0);
+        if (o->stats)
+            printf("BSP tree: %u -> %u triangles, %u nodes, depth %u; RAM: the colour frame, %lu bytes\n",
+                   (unsigned)mesh->triangle_count, tree.triangle_count, tree.node_count, tree.depth,
+                   (unsigned long)tg.color_stride * o->height);
+        bsp_free(&tree);
+    } else {
+        zl_vis_config cfg;
+        zl_vis v;
+        size_t bytes;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.width = (uint16_t)o->width;
+        cfg.height = (uint16_t)o->height;
+        cfg.algorithm = (uint8_t)(o->visibility == 1 ? ZL_VIS_AET : o->visibility == 2 ? ZL_VIS_PAINTER : ZL_VIS_RAYCAST);
+        cfg.format = (uint8_t)o->format;
+        cfg.max_meshes = 1;
+        cfg.max_vertices = mesh->vertex_count;
+        cfg.max_triangles = mesh->triangle_count;
+        cfg.max_active = (uint32_t)mesh->triangle_count * 7u + 1u; /* always enough */
+        bytes = zl_vis_bytes(&cfg);
+        work = bytes ? malloc(bytes) : NULL;
+        if (work == NULL) {
+            error("out of memory for a %lu-byte work buffer", (unsigned long)bytes);
+            return 0;
+        }
+        st = zl_vis_begin(&v, &cfg, work, bytes);
+        if (st == ZL_OK)
+            st = zl_vis_add_mesh(&v, mesh, mvp, state);
+        if (st == ZL_OK && cfg.algorithm == ZL_VIS_PAINTER) {
+            frame = malloc((size_t)tg.color_stride * o->height);
+            tg.color = frame;
+            st = frame ? zl_painter_draw(&v, &tg, o->bg) : ZL_ERR_SIZE;
+        } else if (st == ZL_OK) {
+            r = zl_vis_render_rows(&v, o->bg, vis_row_out, out);
+            if (r == BAND_WRITE_FAILED)
+                goto done;
+            st = (zl_status)r;
+        }
+        if (o->stats)
+            printf("work buffer: %lu bytes (zl_vis_bytes)%s\n", (unsigned long)bytes,
+                   frame ? " plus the colour frame" : "");
+    }
+    if (st != ZL_OK || (frame == NULL && tg.color == NULL && o->visibility != 1 && o->visibility != 4)) {
+        error("render failed: %s", status_name(st));
+        goto done;
+    }
+    ok = 1;
+    if (frame != NULL) {
+        static const uint16_t no_depth[1] = {0};
+        unsigned y;
+        for (y = 0; y < o->height && ok; y++)
+            ok = write_rows(out, (const uint8_t *)frame + (size_t)y * (size_t)tg.color_stride, 0, no_depth, 0, 1);
+    }
+done:
+    free(work);
+    free(frame);
+    return ok;
+}
+
 /* ------------------------------------------------------------------- main */
 
 static int normalize_light(const double *l, zl_vec3 *out)
@@ -910,7 +1061,9 @@ int main(int argc, char **argv)
     }
     /* Writer errors land in msg; the renderer reports its own. */
     msg[0] = '\0';
-    if (o.band_rows == 0)
+    if (o.visibility != 0)
+        ok = render_vis(&o, &mesh, mvp_ptr, &state, &out);
+    else if (o.band_rows == 0)
         ok = render_frame(&o, &mesh, mvp_ptr, &state, &out);
     else
         ok = render_bands(&o, &mesh, mvp_ptr, &state, &out);
