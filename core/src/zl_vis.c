@@ -18,7 +18,7 @@
 #define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
 
 typedef struct {
-    size_t meshes, vcache, visible, row_start, keys, pool, edges, act, free_slots, flags, inset, color, ids,
+    size_t vcache, visible, row_start, keys, pool, edges, act, free_slots, flags, inset, color, ids,
         gap, total;
 } layout;
 
