@@ -41,9 +41,13 @@ typedef struct {
     zl_style style;
     int is_lines;
     zl_lines lines;
+    zl_texture tex;
+    zl_fixed uv[NV * 2];
 } scene_mesh;
 
 static int styled; /* the scene uses styles and lines (test_random_styled_scenes...) */
+static uint16_t tex_texels[16 * 8];
+static const zl_rgb toon_table[4] = {{20, 10, 60}, {80, 40, 120}, {160, 120, 200}, {250, 240, 255}};
 
 static scene_mesh scene[NMESH];
 static uint8_t frame_color[W * H * 3];
@@ -124,6 +128,27 @@ static void random_mesh(scene_mesh *m)
             m->style.offset_factor = rand_range(-4 * ZL_FX_ONE, 4 * ZL_FX_ONE);
             m->style.offset_units = rand_range(-2000 * ZL_FX_ONE, 2000 * ZL_FX_ONE);
         }
+        if (rand_range(0, 1)) {
+            for (i = 0; i < 16 * 8; i++)
+                tex_texels[i] = (uint16_t)next_rand();
+            for (i = 0; i < NV * 2; i++)
+                m->uv[i] = rand_range(-2 * ZL_FX_ONE, 2 * ZL_FX_ONE);
+            m->tex.texels = tex_texels;
+            m->tex.width = (uint16_t)(1u << rand_range(0, 4));
+            m->tex.height = (uint16_t)(1u << rand_range(0, 3));
+            m->tex.stride = 16;
+            m->tex.wrap_s = (uint8_t)rand_range(0, 1);
+            m->tex.wrap_t = (uint8_t)rand_range(0, 1);
+            m->style.texture = &m->tex;
+            m->style.texcoords = m->uv;
+            m->style.tex_mapping = (uint8_t)rand_range(0, 1);
+            m->style.tex_every = (uint8_t)(rand_range(0, 1) ? 0 : 1u << rand_range(1, 6));
+        }
+        m->style.persp_gouraud = (uint8_t)rand_range(0, 1);
+        if (rand_range(0, 3) == 0) {
+            m->style.toon_bands = (uint8_t)rand_range(1, 4);
+            m->style.toon_colors = toon_table;
+        }
         if (rand_range(0, 2) == 0) {
             m->is_lines = 1;
             memset(&m->lines, 0, sizeof m->lines);
@@ -136,6 +161,8 @@ static void random_mesh(scene_mesh *m)
         }
     }
 }
+
+static uint32_t frame_vcache[NV * 2]; /* ZL_VERTEX_CACHE_BYTES(NV) */
 
 static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
 {
@@ -152,6 +179,12 @@ static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
     t.format = (uint8_t)fmt;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, bgz));
+    /* Half the frames draw through the optional vertex cache: the band
+     * comparison then checks that it does not change a pixel either. */
+    if (next_rand() & 1u) {
+        ctx.vertex_cache = frame_vcache;
+        ctx.vertex_cache_bytes = sizeof frame_vcache;
+    }
     for (i = 0; i < NMESH; i++) {
         const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
         ctx.state = scene[i].state;
@@ -177,6 +210,7 @@ static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
     c->max_triangles = NT * NMESH;
     c->max_active = NT * NMESH * 7;
     c->styled = (uint8_t)styled;
+    c->textured = (uint8_t)styled;
 }
 
 typedef struct {

@@ -44,6 +44,28 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
     out->r = color_q8(s->mesh, idx, 0);
     out->g = color_q8(s->mesh, idx, 1);
     out->b = color_q8(s->mesh, idx, 2);
+    out->u = 0;
+    out->v = 0;
+    return 1;
+}
+
+/* Texture coordinate (Q16.16 of the size) in 1/256 texel, within +-2^23. */
+static int32_t texel_q8(zl_fixed c, uint16_t size)
+{
+    int64_t v = zl_floor_shift64((int64_t)c * size + 128, 8);
+    const int64_t lim = (int64_t)1 << 23;
+    return (int32_t)(v < -lim ? -lim : (v > lim ? lim : v));
+}
+
+/* zl_vertex_clip plus the texture coordinates of the style. */
+static int vertex_clip_ex(const zl_source *s, const zl_style *sty, uint16_t idx, zl_cvert *out)
+{
+    if (!zl_vertex_clip(s, idx, out))
+        return 0;
+    if (sty != NULL && sty->texture != NULL && sty->texcoords != NULL) {
+        out->u = texel_q8(sty->texcoords[idx * 2u], sty->texture->width);
+        out->v = texel_q8(sty->texcoords[idx * 2u + 1], sty->texture->height);
+    }
     return 1;
 }
 
@@ -119,6 +141,9 @@ void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
     out->r = color_out(v->r);
     out->g = color_out(v->g);
     out->b = color_out(v->b);
+    out->u = v->u;
+    out->v = v->v;
+    out->w = s->mvp != NULL ? (v->w < 1 ? 1 : v->w) : ZL_FX_ONE;
 }
 
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
@@ -182,6 +207,8 @@ static void intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, int6
     res->r = lerp(in->r, out->r, t);
     res->g = lerp(in->g, out->g, t);
     res->b = lerp(in->b, out->b, t);
+    res->u = lerp(in->u, out->u, t);
+    res->v = lerp(in->v, out->v, t);
     /* Put the new vertex exactly on the planes whose equation is simple. */
     if (plane == PLANE_NEAR)
         res->z = 0;
@@ -211,56 +238,78 @@ static unsigned clip_plane(const zl_source *s, unsigned plane, const zl_cvert *s
     return m;
 }
 
-/* Lambert intensity 0..255 of the face (p0, p1, p2), front side by winding. */
+/* Largest magnitude of n values. */
+static int64_t max_abs(const int64_t *v, unsigned n)
+{
+    int64_t big = 0;
+    unsigned k;
+    for (k = 0; k < n; k++) {
+        int64_t a = v[k] < 0 ? -v[k] : v[k];
+        if (a > big)
+            big = a;
+    }
+    return big;
+}
+
+/* Number of right shifts that bring big below 2^bits. */
+static unsigned shift_below(int64_t big, unsigned bits)
+{
+    unsigned shift = 0;
+    while ((big >> shift) >= ((int64_t)1 << bits))
+        shift++;
+    return shift;
+}
+
+static int32_t light_q14(zl_fixed c)
+{
+    int32_t v = c / 4;
+    return v > (1 << 14) ? (1 << 14) : (v < -(1 << 14) ? -(1 << 14) : v);
+}
+
+/*
+ * Lambert intensity 0..255 of the face (p0, p1, p2), front side by winding.
+ * Only 8 bits come out, so the normal is scaled to 14 bits and the rest is
+ * 32-bit arithmetic (one 32-bit square root and division): this runs once
+ * per drawn triangle, so it must be cheap on a Cortex-M.
+ */
 static unsigned face_intensity(const zl_source *s, const uint16_t *idx)
 {
     const zl_fixed *pos = s->mesh->positions;
     const zl_state *st = s->state;
-    int64_t e1[3], e2[3], n[3], big = 0, dot;
-    uint64_t sq;
-    int64_t len, cosv;
-    unsigned k, shift = 0;
+    int64_t e[6], n[3];
+    int32_t m[3], dot, cosv;
+    uint32_t len;
+    unsigned k, shift;
     for (k = 0; k < 3; k++) {
-        e1[k] = (int64_t)pos[idx[1] * 3u + k] - pos[idx[0] * 3u + k];
-        e2[k] = (int64_t)pos[idx[2] * 3u + k] - pos[idx[0] * 3u + k];
-        if (e1[k] > big || -e1[k] > big)
-            big = e1[k] > 0 ? e1[k] : -e1[k];
-        if (e2[k] > big || -e2[k] > big)
-            big = e2[k] > 0 ? e2[k] : -e2[k];
+        e[k] = (int64_t)pos[idx[1] * 3u + k] - pos[idx[0] * 3u + k];
+        e[k + 3] = (int64_t)pos[idx[2] * 3u + k] - pos[idx[0] * 3u + k];
     }
-    /* Scale the edges below 2^30 so the cross product fits 64 bits. */
-    while ((big >> shift) >= ((int64_t)1 << 30))
-        shift++;
-    for (k = 0; k < 3; k++) {
-        e1[k] = zl_floor_shift64(e1[k], shift);
-        e2[k] = zl_floor_shift64(e2[k], shift);
-    }
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    /* ... and the normal below 2^31 so its squared length fits. */
-    big = 0;
+    /* Edges below 2^30 so the cross product fits 64 bits... */
+    shift = shift_below(max_abs(e, 6), 30);
+    for (k = 0; k < 6; k++)
+        e[k] = zl_floor_shift64(e[k], shift);
+    n[0] = e[1] * e[5] - e[2] * e[4];
+    n[1] = e[2] * e[3] - e[0] * e[5];
+    n[2] = e[0] * e[4] - e[1] * e[3];
+    /* ... and the normal below 2^14, enough for 8 bits of intensity. */
+    shift = shift_below(max_abs(n, 3), 14);
     for (k = 0; k < 3; k++)
-        if (n[k] > big || -n[k] > big)
-            big = n[k] > 0 ? n[k] : -n[k];
-    shift = 0;
-    while ((big >> shift) >= ((int64_t)1 << 31))
-        shift++;
-    for (k = 0; k < 3; k++)
-        n[k] = zl_floor_shift64(n[k], shift);
-    sq = (uint64_t)(n[0] * n[0]) + (uint64_t)(n[1] * n[1]) + (uint64_t)(n[2] * n[2]);
-    len = zl_isqrt64(sq);
+        m[k] = (int32_t)zl_floor_shift64(n[k], shift);
+    len = zl_isqrt32((uint32_t)(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]));
     if (len == 0)
         return st->ambient;
-    dot = n[0] * st->light_dir.x + n[1] * st->light_dir.y + n[2] * st->light_dir.z;
+    /* light_dir is a unit vector in Q16; in Q14, clamped to [-1, 1], the three
+     * products and their sum stay inside 32 bits whatever the caller passed. */
+    dot = m[0] * light_q14(st->light_dir.x) + m[1] * light_q14(st->light_dir.y) +
+          m[2] * light_q14(st->light_dir.z);
     if (st->front_face == ZL_FRONT_CW)
         dot = -dot;
-    cosv = dot / len; /* Q16 */
-    if (cosv <= 0)
+    if (dot <= 0)
         return st->ambient;
-    if (cosv > ZL_FX_ONE)
-        cosv = ZL_FX_ONE;
-    return st->ambient + (unsigned)(((255 - st->ambient) * cosv + 32768) >> 16);
+    cosv = dot / (int32_t)len; /* Q14 */
+    if (cosv > (1 << 14))
+        cosv = 1 << 14;
+    return st->ambient + (unsigned)(((255 - st->ambient) * cosv + (1 << 13)) >> 14);
 }
 
 static uint8_t scale255(unsigned c, unsigned i)
@@ -280,9 +329,11 @@ static void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *
     const uint8_t *fc = s->mesh->face_colors;
     unsigned i, k;
     poly->flat = fc ? (zl_rgb){fc[t * 3], fc[t * 3 + 1], fc[t * 3 + 2]} : st->color;
+    poly->light = 255;
     if (!st->light_on)
         return;
     i = face_intensity(s, idx);
+    poly->light = (uint8_t)i;
     poly->flat.r = scale255(poly->flat.r, i);
     poly->flat.g = scale255(poly->flat.g, i);
     poly->flat.b = scale255(poly->flat.b, i);
@@ -294,7 +345,7 @@ static void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *
 }
 
 /* All three vertices cached inside: the fast path of scanline mode. */
-static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *out)
+static int polygon_from_cache(const zl_source *s, const zl_style *sty, const uint16_t *idx, zl_poly *out)
 {
     unsigned k;
     for (k = 0; k < 3; k++) {
@@ -306,18 +357,31 @@ static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *
         w->r = (uint16_t)color_q8(s->mesh, idx[k], 0);
         w->g = (uint16_t)color_q8(s->mesh, idx[k], 1);
         w->b = (uint16_t)color_q8(s->mesh, idx[k], 2);
+        w->u = 0;
+        w->v = 0;
+        w->w = ZL_FX_ONE;
+        if (zl_style_needs_planes(sty)) {
+            /* w and the texture coordinates are not cached: the same
+             * transform as frame mode's gives the same values. */
+            zl_cvert cv;
+            if (vertex_clip_ex(s, sty, idx[k], &cv)) {
+                w->u = cv.u;
+                w->v = cv.v;
+                w->w = s->mvp != NULL ? (cv.w < 1 ? 1 : cv.w) : ZL_FX_ONE;
+            }
+        }
     }
     out->n = 3;
     return 1;
 }
 
-static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out)
+static int polygon_clipped(const zl_source *s, const zl_style *sty, const uint16_t *idx, zl_poly *out)
 {
     zl_cvert a[ZL_MAX_POLY], b[ZL_MAX_POLY];
     zl_cvert *src = a, *dst = b, *tmp;
     unsigned codes[3], all_out, any_out, plane, n = 3, k;
     for (k = 0; k < 3; k++) {
-        if (!zl_vertex_clip(s, idx[k], &a[k]))
+        if (!vertex_clip_ex(s, sty, idx[k], &a[k]))
             return 0;
         codes[k] = zl_outcode(s, &a[k]);
     }
@@ -343,6 +407,11 @@ static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out
 
 int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out)
 {
+    return zl_tri_polygon_ex(s, NULL, t, out);
+}
+
+int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out)
+{
     const uint16_t *idx = &s->mesh->indices[t * 3u];
     int ok;
     if (s->cache != NULL) {
@@ -350,15 +419,26 @@ int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out)
         if (x0 == ZL_CACHE_INVALID || x1 == ZL_CACHE_INVALID || x2 == ZL_CACHE_INVALID)
             return 0;
         if (x0 != ZL_CACHE_COMPLEX && x1 != ZL_CACHE_COMPLEX && x2 != ZL_CACHE_COMPLEX)
-            ok = polygon_from_cache(s, idx, out);
+            ok = polygon_from_cache(s, sty, idx, out);
         else
-            ok = polygon_clipped(s, idx, out);
+            ok = polygon_clipped(s, sty, idx, out);
     } else {
-        ok = polygon_clipped(s, idx, out);
+        ok = polygon_clipped(s, sty, idx, out);
     }
-    if (ok)
-        shade(s, t, idx, out);
     return ok;
+}
+
+void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly)
+{
+    shade(s, t, &s->mesh->indices[t * 3u], poly);
+}
+
+int zl_tri_polygon_ex(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out)
+{
+    if (!zl_tri_polygon_geom(s, sty, t, out))
+        return 0;
+    zl_tri_shade(s, t, out);
+    return 1;
 }
 
 /* ------------------------------------------------------ lines and points */

@@ -1,6 +1,9 @@
 /* Immediate (frame) mode: draw meshes straight into a full target. */
 #include "zl_internal.h"
 
+/* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
+typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
+
 static int aligned2(const void *p)
 {
     return ((uintptr_t)p & 1u) == 0;
@@ -41,6 +44,8 @@ zl_status zl_init(zl_context *ctx, const zl_target *target)
     ctx->target = *target;
     zl_state_default(&ctx->state);
     zl_style_default(&ctx->style);
+    ctx->vertex_cache = NULL;
+    ctx->vertex_cache_bytes = 0;
     return ZL_OK;
 }
 
@@ -60,7 +65,6 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
     zl_span_state ss;
     zl_status st;
     int32_t y;
-    uint16_t x;
     if (ctx == NULL)
         return ZL_ERR_ARG;
     st = check_target(&ctx->target);
@@ -75,8 +79,7 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
         if (ss.bpp != 0)
             zl_fill_color_row(color_row(&ctx->target, y), &ss, color);
         if (z != NULL && ctx->state.depth_write)
-            for (x = 0; x < ctx->target.width; x++)
-                z[x] = depth;
+            zl_fill16(z, depth, ctx->target.width);
     }
     return ZL_OK;
 }
@@ -97,15 +100,53 @@ zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
 }
 
 /* Draw one set-up triangle, line or point into the target, all its rows. */
-static void draw_rows(const zl_context *ctx, zl_active *t, zl_gouraud *g, const zl_span_state *ss)
+static void draw_rows(const zl_context *ctx, zl_active *t, zl_gouraud *g, zl_texplanes *tp,
+                      const zl_span_state *ss)
 {
     if (t->kind != ZL_KIND_TRI) {
         while (zl_prim_row(t, ss, color_row(&ctx->target, t->row), depth_row(&ctx->target, t->row)))
             ;
         return;
     }
+    if (tp != NULL) {
+        while (zl_tri_row_ex(t, g, tp, &ctx->style, ss, color_row(&ctx->target, t->row),
+                             depth_row(&ctx->target, t->row)))
+            ;
+        return;
+    }
     while (zl_tri_row(t, g, ss, color_row(&ctx->target, t->row), depth_row(&ctx->target, t->row)))
         ;
+}
+
+/* Whether a filled polygon has a piece that survives culling and bounds, so
+ * culled triangles skip shading. Line and point modes always go on. */
+static int may_draw(const zl_source *src, const zl_style *sty, const zl_poly *poly)
+{
+    unsigned k;
+    if (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL)
+        return 1;
+    for (k = 1; k + 1 < poly->n; k++) {
+        int32_t first, end;
+        if (zl_tri_classify(&poly->v[0], &poly->v[k], &poly->v[k + 1], src->state, src->width, src->height,
+                            &first, &end))
+            return 1;
+    }
+    return 0;
+}
+
+/* Set up and draw every piece of a triangle's polygon. Out of line, so its
+ * records are not on the stack of the clipping path. */
+static ZL_NOINLINE void draw_pieces(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_poly *poly,
+                                    const zl_span_state *ss)
+{
+    unsigned k, n = zl_tri_pieces(src, &ctx->style, t, poly);
+    for (k = 0; k < n; k++) {
+        zl_active tri;
+        zl_gouraud g;
+        zl_texplanes tp;
+        if (zl_tri_piece(src, &ctx->style, t, poly, k, &tri, &g, &tp))
+            draw_rows(ctx, &tri, &g, zl_style_needs_planes(&ctx->style) ? &tp : NULL, ss);
+    }
 }
 
 zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
@@ -114,7 +155,6 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
-    unsigned n;
     if (ctx == NULL)
         return ZL_ERR_ARG;
     st = check_target(&ctx->target);
@@ -132,20 +172,24 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     src.cache = NULL;
     src.width = ctx->target.width;
     src.height = ctx->target.height;
+    if (ctx->vertex_cache != NULL && ((uintptr_t)ctx->vertex_cache & 3u) == 0 &&
+        ctx->vertex_cache_bytes >= ZL_VERTEX_CACHE_BYTES(mesh->vertex_count)) {
+        /* Transform each vertex once; triangles read the cache exactly as
+         * scanline mode does, so the pixels do not change. */
+        zl_cached_vertex *cache = (zl_cached_vertex *)ctx->vertex_cache;
+        uint16_t v;
+        for (v = 0; v < mesh->vertex_count; v++)
+            cache[v] = zl_cache_vertex(&src, v);
+        src.cache = cache;
+    }
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
     for (t = 0; t < mesh->triangle_count; t++) {
         zl_poly poly;
-        unsigned k;
-        if (!zl_tri_polygon(&src, t, &poly))
+        if (!zl_tri_polygon_geom(&src, &ctx->style, t, &poly) || !may_draw(&src, &ctx->style, &poly))
             continue;
-        n = zl_tri_pieces(&src, &ctx->style, t, &poly);
-        for (k = 0; k < n; k++) {
-            zl_active tri;
-            zl_gouraud g;
-            if (zl_tri_piece(&src, &ctx->style, t, &poly, k, &tri, &g))
-                draw_rows(ctx, &tri, &g, &ss);
-        }
+        zl_tri_shade(&src, t, &poly);
+        draw_pieces(ctx, &src, t, &poly, &ss);
     }
     return ZL_OK;
 }
@@ -207,7 +251,7 @@ zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *m
     for (k = 0; k < n; k++) {
         zl_active rec;
         if (zl_lines_record(&src, lines, &ctx->style, &ctx->state, k, &rec))
-            draw_rows(ctx, &rec, NULL, &ss);
+            draw_rows(ctx, &rec, NULL, NULL, &ss);
     }
     return ZL_OK;
 }

@@ -37,7 +37,7 @@ typedef struct {
 #define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
 
 typedef struct {
-    size_t meshes, vcache, row_start, visible, pool, gouraud, ext, depth, color0, color1, total;
+    size_t meshes, vcache, row_start, visible, pool, gouraud, ext, tex, depth, color0, color1, total;
 } layout;
 
 /* Offsets of every region of the work buffer. The one place that decides
@@ -65,7 +65,8 @@ static int layout_of(const zl_frame_config *c, layout *l)
     if (ALIGN8(pool) + gouraud < diff)
         gouraud = diff - ALIGN8(pool);
     l->ext = l->gouraud + ALIGN8(gouraud);
-    l->depth = l->ext + (c->styled ? ALIGN8((size_t)c->max_meshes * sizeof(zl_frame_ext)) : 0);
+    l->tex = l->ext + (c->styled ? ALIGN8((size_t)c->max_meshes * sizeof(zl_frame_ext)) : 0);
+    l->depth = l->tex + (c->textured ? ALIGN8((size_t)c->max_active * sizeof(zl_texplanes)) : 0);
     l->color0 = l->depth + ALIGN8(band_px * 2);
     l->color1 = l->color0 + ALIGN8(band_px * bpp);
     l->total = l->color1 + (c->color_buffers == 2 ? ALIGN8(band_px * bpp) : 0);
@@ -104,6 +105,7 @@ zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, si
     f->pool = (zl_active *)(void *)(w + l.pool);
     f->gouraud = cfg->gouraud ? w + l.gouraud : NULL;
     f->ext = cfg->styled ? w + l.ext : NULL;
+    f->tex = cfg->textured ? w + l.tex : NULL;
     f->depth_band = (uint16_t *)(void *)(w + l.depth);
     f->color_band[0] = w + l.color0;
     f->color_band[1] = cfg->color_buffers == 2 ? w + l.color1 : w + l.color0;
@@ -127,7 +129,8 @@ static int is_default_style(const zl_style *s)
     zl_style_default(&d);
     return s->polygon_front == d.polygon_front && s->polygon_back == d.polygon_back &&
            s->point_size == d.point_size && s->line_algo == d.line_algo && s->offset_factor == d.offset_factor &&
-           s->offset_units == d.offset_units;
+           s->offset_units == d.offset_units && s->texture == d.texture && s->persp_gouraud == d.persp_gouraud &&
+           s->toon_bands == d.toon_bands;
 }
 
 /* Record the style of mesh record mi (default when NULL), and lines. */
@@ -163,6 +166,8 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     if (state->shading == ZL_SHADE_GOURAUD && !f->cfg.gouraud)
         return ZL_ERR_CAPACITY;
     if (!f->cfg.styled && (lines != NULL || (style != NULL && !is_default_style(style))))
+        return ZL_ERR_CAPACITY;
+    if (!f->cfg.textured && zl_style_needs_planes(style))
         return ZL_ERR_CAPACITY;
     if (f->mesh_count >= f->cfg.max_meshes || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices ||
         f->triangle_total + mesh->triangle_count > 65535u)
@@ -225,43 +230,60 @@ static void source_of(const zl_frame *f, const zl_frame_mesh *m, zl_source *s)
     s->height = f->cfg.height;
 }
 
+/* Row range of lines primitive t (one record); 0 when it shows nothing.
+ * Out of line, like the next one, so its record is not on the stack of the
+ * clipping path. */
+static ZL_NOINLINE unsigned classify_lines(const zl_frame *f, const zl_frame_mesh *m, const zl_source *s,
+                                           uint32_t t, int32_t *first, int32_t *end)
+{
+    unsigned mi = (unsigned)(m - f->meshes);
+    zl_active rec;
+    if (!zl_lines_record(s, &ext_of(f, mi)->lines, style_of(f, mi), &m->state, t, &rec))
+        return 0;
+    *first = rec.row;
+    *end = rec.end;
+    return 1;
+}
+
+/* Line and point pieces of a triangle in those polygon modes: their own row
+ * ranges, from a full setup (the colour does not matter here). */
+static ZL_NOINLINE unsigned classify_pieces(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *poly,
+                                            int32_t *first, int32_t *end)
+{
+    unsigned k, n, pieces = 0;
+    poly->light = 255;
+    poly->flat.r = poly->flat.g = poly->flat.b = 0;
+    n = zl_tri_pieces(s, sty, t, poly);
+    for (k = 0; k < n; k++) {
+        zl_active rec;
+        if (!zl_tri_piece(s, sty, t, poly, k, &rec, NULL, NULL))
+            continue;
+        pieces++;
+        if (rec.row < *first)
+            *first = rec.row;
+        if (rec.end > *end)
+            *end = rec.end;
+    }
+    return pieces;
+}
+
 /* Row range and piece count of triangle t; 0 when nothing of it shows. */
 static unsigned classify_source(const zl_frame *f, const zl_frame_mesh *m, uint32_t t, int32_t *first,
                                 int32_t *end)
 {
     zl_source s;
     zl_poly poly;
-    unsigned k, n, pieces = 0, mi = (unsigned)(m - f->meshes);
+    unsigned k, pieces = 0, mi = (unsigned)(m - f->meshes);
     const zl_style *sty = style_of(f, mi);
     source_of(f, m, &s);
     *first = INT16_MAX;
     *end = 0;
-    if (sty != NULL && ext_of(f, mi)->is_lines) {
-        zl_active rec;
-        if (!zl_lines_record(&s, &ext_of(f, mi)->lines, sty, &m->state, t, &rec))
-            return 0;
-        *first = rec.row;
-        *end = rec.end;
-        return 1;
-    }
-    if (!zl_tri_polygon(&s, t, &poly))
+    if (sty != NULL && ext_of(f, mi)->is_lines)
+        return classify_lines(f, m, &s, t, first, end);
+    if (!zl_tri_polygon_geom(&s, sty, t, &poly))
         return 0;
-    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL)) {
-        /* Line and point pieces: their own row ranges, from a full setup. */
-        n = zl_tri_pieces(&s, sty, t, &poly);
-        for (k = 0; k < n; k++) {
-            zl_active rec;
-            zl_gouraud g;
-            if (!zl_tri_piece(&s, sty, t, &poly, k, &rec, &g))
-                continue;
-            pieces++;
-            if (rec.row < *first)
-                *first = rec.row;
-            if (rec.end > *end)
-                *end = rec.end;
-        }
-        return pieces;
-    }
+    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
+        return classify_pieces(&s, sty, t, &poly, first, end);
     for (k = 1; k + 1 < poly.n; k++) {
         int32_t a, b;
         if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, f->cfg.width, f->cfg.height,
@@ -315,7 +337,7 @@ static uint32_t count_pass(zl_frame *f, int32_t *diff, int place)
     return visible;
 }
 
-static zl_status plan(zl_frame *f)
+static ZL_NOINLINE zl_status plan(zl_frame *f)
 {
     int32_t *diff = (int32_t *)(void *)f->pool;
     uint32_t running = 0, start = 0, peak = 0, slot;
@@ -360,9 +382,14 @@ static zl_gouraud *gouraud_of(const zl_frame *f, uint16_t slot)
     return f->gouraud ? (zl_gouraud *)(void *)(f->gouraud + (size_t)slot * sizeof(zl_gouraud)) : NULL;
 }
 
+static zl_texplanes *tex_of(const zl_frame *f, uint16_t slot)
+{
+    return f->tex ? (zl_texplanes *)(void *)(f->tex + (size_t)slot * sizeof(zl_texplanes)) : NULL;
+}
+
 /* Set up the pieces of triangle `id` and insert them after *link, keeping
  * the list sorted; returns the link to insert the next id after. */
-static uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
+static ZL_NOINLINE uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
 {
     uint8_t mi = mesh_of_id(f, id);
     const zl_frame_mesh *m = &f->meshes[mi];
@@ -373,7 +400,7 @@ static uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
     unsigned k, n = 1;
     source_of(f, m, &s);
     if (!lines) {
-        if (!zl_tri_polygon(&s, id - m->tri_base, &poly))
+        if (!zl_tri_polygon_ex(&s, sty, id - m->tri_base, &poly))
             return link;
         n = zl_tri_pieces(&s, sty, id - m->tri_base, &poly);
     }
@@ -386,7 +413,7 @@ static uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
             break; /* cannot happen: planning bounded the peak */
         a = &f->pool[slot];
         if (lines ? !zl_lines_record(&s, &ext_of(f, mi)->lines, sty, &m->state, id - m->tri_base, a)
-                  : !zl_tri_piece(&s, sty, id - m->tri_base, &poly, k, a, gouraud_of(f, slot)))
+                  : !zl_tri_piece(&s, sty, id - m->tri_base, &poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
             continue;
         f->free_head = a->next;
         a->id = id;
@@ -412,8 +439,16 @@ static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
             link = &a->next;
             continue;
         }
-        if (a->kind == ZL_KIND_TRI ? zl_tri_row(a, gouraud_of(f, slot), &f->meshes[a->mesh].span, crow, zrow)
-                                   : zl_prim_row(a, &f->meshes[a->mesh].span, crow, zrow)) {
+        const zl_style *sty = style_of(f, a->mesh);
+        const zl_span_state *ss = &f->meshes[a->mesh].span;
+        int more;
+        if (a->kind != ZL_KIND_TRI)
+            more = zl_prim_row(a, ss, crow, zrow);
+        else if (zl_style_needs_planes(sty))
+            more = zl_tri_row_ex(a, gouraud_of(f, slot), tex_of(f, slot), sty, ss, crow, zrow);
+        else
+            more = zl_tri_row(a, gouraud_of(f, slot), ss, crow, zrow);
+        if (more) {
             link = &a->next;
         } else {
             *link = a->next;
@@ -451,10 +486,8 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
     for (r = 0; r < rows; r++) {
         uint8_t *crow = color + (size_t)r * w * bpp;
         uint16_t *zrow = f->depth_band + (size_t)r * w;
-        uint16_t x;
         zl_fill_color_row(crow, &clear, f->clear_color);
-        for (x = 0; x < w; x++)
-            zrow[x] = f->clear_depth;
+        zl_fill16(zrow, f->clear_depth, w);
         render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
     }
     band->first_row = f->next_row;

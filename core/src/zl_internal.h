@@ -26,12 +26,15 @@ typedef struct {
     int32_t x, y;       /* subpixels */
     uint32_t z;         /* window depth * 65535 * 65536, i.e. Q16 of the stored scale */
     uint16_t r, g, b;   /* colour, Q8 (0 .. 255 * 256) */
+    int32_t u, v;       /* texture coordinates, 1/256 texel (0 without a texture) */
+    int32_t w;          /* clip w, Q16.16 (>= 1) */
 } zl_wvert;
 
 /* Clip-space vertex carried through clipping. */
 typedef struct {
     int32_t x, y, z, w; /* Q16.16 */
     int32_t r, g, b;    /* colour, Q8 */
+    int32_t u, v;       /* texture coordinates, 1/256 texel */
 } zl_cvert;
 
 /* Cached window vertex of scanline mode: 8 bytes. x == ZL_CACHE_COMPLEX marks a
@@ -58,6 +61,7 @@ typedef struct {
     zl_wvert v[ZL_MAX_POLY];
     unsigned n;
     zl_rgb flat;        /* lit flat colour */
+    uint8_t light;      /* lighting intensity 0..255 (255 with the light off) */
 } zl_poly;
 
 /* Exact DDA edge stepper: at each row, x is the first pixel index whose centre
@@ -75,8 +79,16 @@ typedef struct {
 } zl_attr;
 
 typedef struct {
-    zl_attr c[3];       /* r, g, b, Q20 of 0..255 */
+    zl_attr c[3];       /* r, g, b, Q20 of 0..255 (times q, see zl_texplanes, when perspective) */
 } zl_gouraud;
+
+/* Texture and perspective planes of a triangle (zl_style textures,
+ * perspective Gouraud): u, v in 1/16 of 1/256 texel (affine) or u q, v q
+ * (perspective), and q = 1/w scaled so the triangle's nearest vertex has
+ * 2^24, all times 16 (Q20 planes of Q16 inputs). */
+typedef struct {
+    zl_attr u, v, q;
+} zl_texplanes;
 
 struct zl_active {
     zl_edge left, right;   /* edges bounding the current rows */
@@ -91,6 +103,7 @@ struct zl_active {
     uint16_t id;           /* source triangle: the drawing order */
     uint16_t next;         /* active-list link (scanline mode) */
     uint8_t kind;          /* ZL_KIND_*: in the tail padding, so the record does not grow */
+    uint8_t light;         /* lighting intensity 0..255, for textures (tail padding too) */
 };
 
 /*
@@ -123,6 +136,14 @@ typedef struct {
 
 #define ZL_LIST_END 0xFFFFu
 
+/* Keep a function out of its caller, so a big local (a polygon) of one
+ * branch does not add to the stack of every path through the caller. */
+#if defined(__GNUC__)
+#define ZL_NOINLINE __attribute__((noinline))
+#else
+#define ZL_NOINLINE
+#endif
+
 /* ---- zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour
  * included). Returns 0 if the transform leaves its range. */
@@ -135,6 +156,14 @@ void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out);
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx);
 /* The window-space polygon of triangle t; 0 if nothing of it is left. */
 int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out);
+/* The same with a style: texture coordinates and w carried to the polygon
+ * when the style has a texture or perspective Gouraud (sty may be NULL). */
+int zl_tri_polygon_ex(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out);
+/* The same without the colours: geometry only, for classification. A polygon
+ * that turns out to be drawn gets its flat colour and lighting from
+ * zl_tri_shade (lighting costs a square root: only for drawn triangles). */
+int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out);
+void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly);
 
 /* ---- zl_raster.c */
 /* Cull and bound fan triangle (a, b, c). Returns 1 and the row range
@@ -145,6 +174,16 @@ int zl_tri_classify(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, con
 int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b,
                  const zl_wvert *c, const zl_poly *poly, const zl_state *st, uint16_t width,
                  uint16_t height);
+/* zl_tri_setup plus the texture / perspective planes into tp when the style
+ * asks for them (tp and sty may be NULL). */
+int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                    const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st,
+                    uint16_t width, uint16_t height);
+/* zl_tri_row for a triangle set up by zl_tri_setup_ex with the same style. */
+int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_span_state *ss,
+                  uint8_t *color_row, uint16_t *depth_row);
+/* Does the style need texture planes (a texture or perspective Gouraud)? */
+int zl_style_needs_planes(const zl_style *sty);
 /* Fill the span of row t->row into the given row buffers, then step t to the
  * next row. Returns 0 when the triangle has no rows left. */
 int zl_tri_row(zl_active *t, zl_gouraud *g, const zl_span_state *ss, uint8_t *color_row,
@@ -154,6 +193,8 @@ void zl_span_state_init(zl_span_state *ss, const zl_state *st, int has_depth, in
                         zl_format format, uint16_t width);
 /* Fill width pixels of a row with a colour, honouring the colour mask. */
 void zl_fill_color_row(uint8_t *row, const zl_span_state *ss, zl_rgb c);
+/* Fill n 16-bit values (depth rows, RGB565 rows). */
+void zl_fill16(uint16_t *p, uint16_t v, uint32_t n);
 
 /* Polygon offset of a triangle, Q20 depth steps: factor * max(|dz/dx|,
  * |dz/dy|) + units; 0 when both are 0. */
@@ -204,7 +245,7 @@ int zl_lines_record(const zl_source *s, const zl_lines *l, const zl_style *sty, 
  * t (and g): 1 if it has pixels. */
 unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly);
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
-                 zl_active *t, zl_gouraud *g);
+                 zl_active *t, zl_gouraud *g, zl_texplanes *tp);
 
 /* ---- zl_draw.c */
 zl_status zl_check_mesh(const zl_mesh *m, int pixel_space);

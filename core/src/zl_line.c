@@ -26,6 +26,18 @@ void zl_style_default(zl_style *s)
     s->line_algo = ZL_LINE_BRESENHAM;
     s->offset_factor = 0;
     s->offset_units = 0;
+    s->texture = NULL;
+    s->texcoords = NULL;
+    s->tex_mapping = ZL_TEX_AFFINE;
+    s->tex_every = 0;
+    s->persp_gouraud = 0;
+    s->toon_bands = 0;
+    s->toon_colors = NULL;
+}
+
+static int pow2_size(uint16_t n)
+{
+    return n >= 1 && n <= 4096 && (n & (n - 1u)) == 0;
 }
 
 zl_status zl_style_check(const zl_style *s)
@@ -38,6 +50,17 @@ zl_status zl_style_check(const zl_style *s)
         return ZL_ERR_RANGE;
     if (s->offset_factor > ZL_FX_INT(256) || s->offset_factor < -ZL_FX_INT(256))
         return ZL_ERR_RANGE;
+    if (s->tex_mapping > ZL_TEX_PERSPECTIVE || s->persp_gouraud > 1 || (s->toon_bands > 0 && s->toon_colors == NULL))
+        return ZL_ERR_ARG;
+    if (s->tex_every > 1 && (s->tex_every > 64 || (s->tex_every & (s->tex_every - 1u)) != 0))
+        return ZL_ERR_RANGE;
+    if (s->texture != NULL) {
+        const zl_texture *t = s->texture;
+        if (t->texels == NULL || s->texcoords == NULL || t->wrap_s > ZL_WRAP_CLAMP || t->wrap_t > ZL_WRAP_CLAMP)
+            return ZL_ERR_ARG;
+        if (!pow2_size(t->width) || !pow2_size(t->height) || t->stride < t->width)
+            return ZL_ERR_SIZE;
+    }
     return ZL_OK;
 }
 
@@ -313,22 +336,35 @@ unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, co
     return mode == ZL_POLY_FILL ? poly->n - 2 : 3u;
 }
 
+/* The flat colour of a triangle: toon band or its lit colour. */
+static zl_rgb flat_of(const zl_style *sty, const zl_poly *poly)
+{
+    if (sty != NULL && sty->toon_bands > 0) {
+        unsigned band = (unsigned)poly->light * sty->toon_bands / 256u;
+        return sty->toon_colors[band];
+    }
+    return poly->flat;
+}
+
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
-                 zl_active *t, zl_gouraud *g)
+                 zl_active *t, zl_gouraud *g, zl_texplanes *tp)
 {
     unsigned plane = 1;
     int mode = ZL_POLY_FILL;
     int64_t off;
+    zl_rgb flat = flat_of(sty, poly);
     if (uses_modes(sty)) {
         mode = tri_mode(s, sty, poly, &plane);
         if (mode < 0)
             return 0;
     }
     if (mode == ZL_POLY_FILL) {
-        if (!zl_tri_setup(t, g, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], poly, s->state, s->width,
-                          s->height))
+        if (!zl_tri_setup_ex(t, g, tp, sty, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], poly, s->state,
+                             s->width, s->height))
             return 0;
-        t->kind = ZL_KIND_TRI;
+        t->rgb[0] = flat.r;
+        t->rgb[1] = flat.g;
+        t->rgb[2] = flat.b;
         off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);
         if (off != 0)
             zl_tri_apply_offset(t, off);
@@ -342,13 +378,13 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
             zl_segment seg;
             if (!zl_segment_make(s, idx[k], idx[(k + 1) % 3u], 0, 0, &seg))
                 return 0;
-            seg.rgb = poly->flat;
+            seg.rgb = flat;
             return zl_line_setup(t, &seg, sty->line_algo, off, s->width, s->height);
         } else {
             zl_lvert p;
             if (!zl_point_make(s, idx[k], &p))
                 return 0;
-            return zl_point_setup(t, &p, poly->flat, sty->point_size, off, s->width, s->height);
+            return zl_point_setup(t, &p, flat, sty->point_size, off, s->width, s->height);
         }
     }
 }

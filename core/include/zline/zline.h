@@ -353,12 +353,18 @@ zl_status zl_state_check(const zl_state *s);
  * texel, |c| < 32768 texels). style.tex_every = N (2, 4, .. 64) computes the
  * exact value only every N pixels of a span (from its first pixel) and steps
  * linearly between: the error grows by at most N^2/8 times the second
- * derivative of the coordinate along the row (a fraction of a texel for
- * N = 16 on the floor of tests/test_texture.c, where it is measured).
+ * derivative of the coordinate along the row, plus N/256 texel from the
+ * truncated step (measured on the floor of tests/test_texture.c).
  *
  * style.persp_gouraud interpolates Gouraud colours the same perspective-
  * correct way (colour/w and 1/w) instead of linearly in screen space.
  * Textures and perspective Gouraud need cfg.textured in scanline mode.
+ */
+/*
+ * TOON: with style.toon_bands = N > 0, a filled triangle's flat colour is
+ * toon_colors[b], b = min(N - 1, floor(i * N / 256)) where i is its Lambert
+ * intensity 0..255 of the lighting rule (zl_state; 255 with the light off).
+ * Its face colour is not used; Gouraud shading keeps its vertex colours.
  */
 typedef enum { ZL_WRAP_REPEAT = 0, ZL_WRAP_CLAMP = 1 } zl_wrap;
 typedef enum { ZL_TEX_AFFINE = 0, ZL_TEX_PERSPECTIVE = 1 } zl_tex_mapping;
@@ -416,6 +422,8 @@ typedef struct {
     uint8_t tex_mapping;        /* zl_tex_mapping */
     uint8_t tex_every;          /* perspective: exact every N pixels, N = 2..64 a power of two; 0 or 1: every pixel */
     uint8_t persp_gouraud;      /* 1: perspective-correct Gouraud colours */
+    uint8_t toon_bands;         /* toon shading: 0 off, else 1 .. 255 bands (see TOON) */
+    const zl_rgb *toon_colors;  /* toon_bands colours, darkest band first */
 } zl_style;
 
 /* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset, no
@@ -443,7 +451,16 @@ typedef struct {
     zl_target target;
     zl_state state;
     zl_style style; /* polygon modes, offset, lines and points */
+    /* Optional vertex cache for zl_draw_mesh (NULL after zl_init): with at
+     * least ZL_VERTEX_CACHE_BYTES(mesh->vertex_count) bytes, 4-byte aligned,
+     * each vertex is transformed once per draw instead of once per triangle
+     * that uses it (the same pixels either way). A smaller cache is not used. */
+    void *vertex_cache;
+    size_t vertex_cache_bytes;
 } zl_context;
+
+/* Bytes of vertex cache for n vertices (scanline mode uses the same entries). */
+#define ZL_VERTEX_CACHE_BYTES(n) ((size_t)(n) * 8u)
 
 /* Check the target and set the default state and style. */
 zl_status zl_init(zl_context *ctx, const zl_target *target);

@@ -168,6 +168,9 @@ static int check_budget(const char *scene_name, uint32_t total)
 }
 
 #ifdef BENCH_FRAME
+/* Vertex cache for the cached frame-mode variant: up to 8192 vertices. */
+static uint32_t vcache_buf[2 * 8192];
+
 /* ------------------------------------------------------------ frame mode */
 
 static uint16_t color_buf[W * H];
@@ -291,6 +294,23 @@ static int run_scene(const scene *s)
     interval(s->name, "clear", m, m + 1);
     interval(s->name, "draw", m + 1, m + 2);
 
+    /* the same frame with the optional vertex cache (each vertex transformed
+     * once, ZL_VERTEX_CACHE_BYTES(n) bytes of RAM): it must give the same image */
+    ctx.vertex_cache = vcache_buf;
+    ctx.vertex_cache_bytes = sizeof vcache_buf;
+    m = stamp_count;
+    mark();
+    zl_clear(&ctx, bg, 65535);
+    zl_draw_mesh(&ctx, &s->mesh, &s->mvp);
+    mark();
+    interval(s->name, "total_vcache", m, m + 1);
+    ctx.vertex_cache = NULL;
+    ctx.vertex_cache_bytes = 0;
+    if (fnv1a(depth_buf, sizeof depth_buf, fnv1a(color_buf, sizeof color_buf, 2166136261u)) != h_draw) {
+        printf("bench: %s: the vertex-cached frame differs from the plain one\n", s->name);
+        return 1;
+    }
+
     /* the staged variants, each after a clear */
     zl_clear(&ctx, bg, 65535);
     m = stamp_count;
@@ -310,6 +330,7 @@ static int run_scene(const scene *s)
     zl_clear(&ctx, bg, 65535);
     stage_rows(s, &ctx, counts);
     printf("RESULT %s %s triangles %u\n", BENCH_TAG, s->name, (unsigned)s->mesh.triangle_count);
+    printf("RESULT %s %s vertices_x8 %u\n", BENCH_TAG, s->name, (unsigned)ZL_VERTEX_CACHE_BYTES(s->mesh.vertex_count));
     printf("RESULT %s %s drawn %lu\n", BENCH_TAG, s->name, (unsigned long)counts[0]);
     printf("RESULT %s %s pixels %lu\n", BENCH_TAG, s->name, (unsigned long)counts[1]);
     printf("RESULT %s %s stack %lu\n", BENCH_TAG, s->name, (unsigned long)stack);

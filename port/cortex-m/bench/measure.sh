@@ -109,6 +109,17 @@ for s in $scenes; do
     done
 done
 echo
+echo "### Frame mode with the optional vertex cache (ctx.vertex_cache: each vertex transformed once)"
+echo
+echo "| scene | opt | instructions per frame | without the cache | vertex cache RAM (bytes) |"
+echo "|---|---|---:|---:|---:|"
+for s in $scenes; do
+    for opt in O2 Os; do
+        t=$(get frame-$opt $s total_vcache); p=$(get frame-$opt $s total)
+        echo "| $s | -$opt | $(num "$t") | $(num "$p") | $(num "$(get frame-$opt $s vertices_x8)") |"
+    done
+done
+echo
 echo "### Frame mode by phase (instructions; the stages run separately, see bench.c)"
 echo
 echo "| scene | opt | triangles | drawn | pixels written | clear | transform/clip | setup | rasterisation | other | transform/clip per triangle | setup per drawn triangle | rasterisation per pixel |"
