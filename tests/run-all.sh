@@ -3,6 +3,9 @@
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
+#   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
+#   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds
+#      under ASan + UBSan (tests/fuzz/run.sh); any finding fails
 # Build trees go to build/ci-*. Exit status: non-zero if anything failed.
 set -eu
 cd "$(dirname "$0")/.."
@@ -20,4 +23,8 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
         -DZLINE_CPU="$cpu"
 done
+echo "=== static analysis"
+sh tools/lint/run.sh
+echo "=== fuzzing, ${FUZZ_SECONDS:-60} s per target"
+sh tests/fuzz/run.sh build/ci-fuzz
 echo "=== all test suites passed"

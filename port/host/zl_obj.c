@@ -386,7 +386,7 @@ static zl_obj_status parse_vertex(parser *p, const char *cur, const char *end)
     size_t k = 0, i;
     zl_obj_status st;
     while (next_token(&cur, end, &t)) {
-        double v;
+        double v = 0.0;
         if (k >= 3 && !is_decimal(t) && !is_nonfinite_word(t))
             return fail(p, ZL_OBJ_ERR_PARSE, "unexpected '%.*s%s' after the vertex coordinates",
                         QUOTE(t));
@@ -505,7 +505,7 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
     while (next_token(&cur, end, &t)) {
         const char *part[3];
         size_t plen[3], parts = 1, i;
-        size_t idx;
+        size_t idx = 0;
         part[0] = t.s;
         plen[0] = 0;
         for (i = 0; i < t.n; i++) {
@@ -800,6 +800,8 @@ static void triangulate(const double *pos, const uint32_t *poly, size_t n, ear_w
         emitted++;                                                                                 \
     } while (0)
 
+    if (n < 3) /* cannot happen: faces have 3 or more vertices */
+        return;
     if (n == 3) {
         EMIT(0, 1, 2);
         return;

@@ -135,11 +135,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         else
             t.height = (uint16_t)(fz_u8(&in) & 1u ? 0 : ZL_MAX_DIM + 1 + fz_u8(&in));
     }
-    /* RGB565 needs an even colour address and stride; depth even strides */
+    /* native RGB565 needs an even colour address and stride (RGB565_BE is
+     * bytes); depth needs even strides */
     target_ok = fmt_ok && t.width >= 1 && t.height >= 1 && t.width <= ZL_MAX_DIM && t.height <= ZL_MAX_DIM &&
                 (t.color == NULL ||
                  (t.color_stride >= (int32_t)(w * bpp) &&
-                  (bpp != 2 || (t.color_stride % 2 == 0 && ((uintptr_t)t.color & 1u) == 0)))) &&
+                  (t.format != ZL_FORMAT_RGB565 ||
+                   (t.color_stride % 2 == 0 && ((uintptr_t)t.color & 1u) == 0)))) &&
                 (t.depth == NULL || (t.depth_stride >= (int32_t)(w * 2) && t.depth_stride % 2 == 0));
 
     plane_snap(&color);

@@ -61,8 +61,9 @@
  *   target width, height     1 .. ZL_MAX_DIM (4096)            ZL_ERR_SIZE
  *   colour stride (bytes)    >= width * bytes per pixel        ZL_ERR_SIZE
  *   depth stride (bytes)     >= width * 2, even                ZL_ERR_SIZE
- *   RGB565 colour, depth     2-byte aligned address, even      ZL_ERR_ARG
- *                            colour stride
+ *   native RGB565 colour,    2-byte aligned address, even      ZL_ERR_ARG
+ *   depth                    colour stride (RGB565_BE and
+ *                            RGB888 are bytes: any alignment)
  *   zl_frame work buffer     >= zl_frame_bytes(cfg) bytes      ZL_ERR_SIZE
  *                            8-byte aligned                    ZL_ERR_ARG
  *   vertices, triangles      0 .. 65535 per mesh (uint16), every ZL_ERR_RANGE
