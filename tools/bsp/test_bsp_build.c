@@ -84,8 +84,10 @@ static uint32_t check_subtree(const bsp_tree *t, uint16_t node, const uint16_t *
             for (d = 0; d < depth; d++)
                 TEST_ASSERT_TRUE(sgn[d] * side(&t->nodes[path[d]], p) >= -tol);
         }
-    memcpy(p2, path, sizeof(uint16_t) * (size_t)depth);
-    memcpy(s2, sgn, sizeof(int) * (size_t)depth);
+    if (depth > 0) {
+        memcpy(p2, path, sizeof(uint16_t) * (size_t)depth);
+        memcpy(s2, sgn, sizeof(int) * (size_t)depth);
+    }
     p2[depth] = node;
     s2[depth] = 1;
     count += check_subtree(t, n->front, p2, s2, depth + 1, max_depth);

@@ -210,6 +210,18 @@ static int load_scene(scene *s, const char *dir, const char *name)
     return 0;
 }
 
+static void free_scene(scene *s)
+{
+    zl_obj_free(&s->obj);
+    free(s->pos);
+    free(s->idx);
+    free(s->fcol);
+    free(s->idcol);
+    free(s->tree_fcol);
+    free(s->tree_idcol);
+    bsp_free(&s->tree);
+}
+
 static size_t tree_flash(const bsp_tree *t)
 {
     return (size_t)t->vertex_count * 12 + (size_t)t->triangle_count * 8 + (size_t)t->node_count * sizeof(zl_bsp_node);
@@ -469,6 +481,7 @@ int main(int argc, char **argv)
             return 2;
         }
         run((int)m, &s, 0, &ri);
+        free_scene(&s);
         return 0;
     }
     if (argc != 2) {
@@ -504,6 +517,7 @@ int main(int argc, char **argv)
         snprintf(trees[si], sizeof trees[si], "| %s | %u | %u | %u | %u | %u | %zu |", s.name,
                  (unsigned)s.mesh.triangle_count, s.tree.triangle_count, s.tree.splits, s.tree.node_count,
                  s.tree.depth, tree_flash(&s.tree));
+        free_scene(&s);
     }
     printf("\nBSP trees (tools/bsp builder, default options), const data in flash:\n\n");
     printf("| scene | input triangles | tree triangles | splits | nodes | depth | flash bytes |\n");
