@@ -283,6 +283,42 @@ static void test_decal(void)
     TEST_ASSERT_EQUAL_MEMORY(cover, got, sizeof got);
 }
 
+/* Toon: the Lambert intensity of each face quantised to N bands, coloured
+ * from the table. Three faces at known angles to the light. */
+static void test_toon_bands(void)
+{
+    static const zl_rgb table[4] = {{10, 0, 0}, {80, 0, 0}, {160, 0, 0}, {240, 0, 0}};
+    /* a pixel-space triangle whose normal (p1 - p0) x (p2 - p0) is +z */
+    static const zl_fixed pos[] = {0, 0, 0, ZL_FX_INT(30), 0, 0, 0, ZL_FX_INT(30), 0};
+    static const uint16_t idx[] = {0, 1, 2};
+    /* light at angle a from the normal: intensity = ambient + (255 - ambient) cos a */
+    static const int32_t lx[] = {0, 46341, 60547, 64540}; /* 0, 45, 67.5, 80 degrees (sin) */
+    static const int32_t lz[] = {65536, 46341, 25080, 11380};
+    static const unsigned want_band[] = {3, 2, 1, 0}; /* 255, 180.3, 97.6, 44.3 with ambient 0 -> N = 4 bands */
+    zl_mesh m = {pos, idx, NULL, NULL, 3, 1};
+    int k;
+    make_target();
+    ctx.state.light_on = 1;
+    ctx.state.ambient = 0;
+    ctx.style.toon_bands = 4;
+    ctx.style.toon_colors = table;
+    for (k = 0; k < 4; k++) {
+        ctx.state.light_dir.x = lx[k];
+        ctx.state.light_dir.y = 0;
+        ctx.state.light_dir.z = lz[k];
+        clear();
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+        TEST_ASSERT_EQUAL_UINT8(table[want_band[k]].r, color[(5 * W + 5) * 3]);
+    }
+    /* N = 1: everything lit takes the one colour; a null table is refused */
+    ctx.style.toon_bands = 1;
+    clear();
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+    TEST_ASSERT_EQUAL_UINT8(10, color[(5 * W + 5) * 3]);
+    ctx.style.toon_colors = NULL;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_draw_mesh(&ctx, &m, NULL));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -290,5 +326,6 @@ int main(void)
     RUN_TEST(test_wireframe_is_depth_tested);
     RUN_TEST(test_offset_amount);
     RUN_TEST(test_decal);
+    RUN_TEST(test_toon_bands);
     return UNITY_END();
 }
