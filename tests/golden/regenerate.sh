@@ -1,0 +1,15 @@
+#!/bin/sh
+# Rewrite the golden images after an intended change of the output, then look
+# at every one of them (tests/golden/*.png are made for that) before committing.
+#   tests/golden/regenerate.sh [BUILD_DIR]
+set -eu
+cd "$(dirname "$0")/../.."
+render=${1:-build}/port/host/zline-render
+grep -v '^#' tests/golden/golden.txt | while IFS= read -r line; do
+    name=${line%%|*}; rest=${line#*|}; model=${rest%%|*}; args=${rest#*|}
+    [ "$args" = "$rest" ] && args=""
+    # shellcheck disable=SC2086
+    "$render" $(echo "$args" | tr '|' ' ') "$model" "tests/golden/$name.ppm"
+    pnmtopng "tests/golden/$name.ppm" > "tests/golden/$name.png"
+    echo "wrote tests/golden/$name.ppm (look at tests/golden/$name.png)"
+done
