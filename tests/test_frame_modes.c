@@ -43,6 +43,8 @@ typedef struct {
     zl_lines lines;
     zl_texture tex;
     zl_fixed uv[NV * 2];
+    zl_mesh_edge edges[NT * 3];
+    zl_outline outline; /* is_lines == 2: the mesh's outline instead of the mesh */
 } scene_mesh;
 
 static int styled; /* the scene uses styles and lines (test_random_styled_scenes...) */
@@ -149,7 +151,17 @@ static void random_mesh(scene_mesh *m)
             m->style.toon_bands = (uint8_t)rand_range(1, 4);
             m->style.toon_colors = toon_table;
         }
-        if (rand_range(0, 2) == 0) {
+        if (rand_range(0, 3) == 0) {
+            memset(&m->outline, 0, sizeof m->outline);
+            m->outline.edges = m->edges;
+            m->outline.edge_count = zl_mesh_edges(&m->mesh, m->edges, NT * 3);
+            m->outline.silhouettes = (uint8_t)rand_range(0, 1);
+            m->outline.creases = (uint8_t)rand_range(0, 1);
+            m->outline.borders = (uint8_t)rand_range(0, 1);
+            m->outline.crease_cos = rand_range(-ZL_FX_ONE, ZL_FX_ONE);
+            m->outline.color.g = (uint8_t)next_rand();
+            m->is_lines = 2;
+        } else if (rand_range(0, 2) == 0) {
             m->is_lines = 1;
             memset(&m->lines, 0, sizeof m->lines);
             m->lines.positions = m->pos;
@@ -189,7 +201,9 @@ static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
         const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
         ctx.state = scene[i].state;
         ctx.style = scene[i].style;
-        if (scene[i].is_lines)
+        if (scene[i].is_lines == 2)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_outlines(&ctx, &scene[i].mesh, mvp, &scene[i].outline));
+        else if (scene[i].is_lines)
             TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_lines(&ctx, &scene[i].lines, mvp));
         else
             TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &scene[i].mesh, mvp));
@@ -211,6 +225,8 @@ static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
     c->max_active = NT * NMESH * 7;
     c->styled = (uint8_t)styled;
     c->textured = (uint8_t)styled;
+    if (styled) /* outlines: a primitive per edge */
+        c->max_triangles = NT * NMESH * 3;
 }
 
 typedef struct {
@@ -246,7 +262,10 @@ static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, bgz));
     for (i = 0; i < NMESH; i++) {
         const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
-        if (scene[i].is_lines)
+        if (scene[i].is_lines == 2)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_outlines(&f, &scene[i].mesh, mvp, &scene[i].state,
+                                                               &scene[i].style, &scene[i].outline));
+        else if (scene[i].is_lines)
             TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_lines(&f, &scene[i].lines, mvp, &scene[i].state,
                                                             &scene[i].style));
         else if (styled)

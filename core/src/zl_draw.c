@@ -220,6 +220,41 @@ void zl_lines_mesh(const zl_lines *l, zl_mesh *m)
     m->triangle_count = (uint16_t)zl_lines_primitives(l);
 }
 
+zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_outline *outline)
+{
+    zl_source src;
+    zl_span_state ss;
+    zl_status st;
+    uint32_t k;
+    if (ctx == NULL)
+        return ZL_ERR_ARG;
+    st = check_target(&ctx->target);
+    if (st == ZL_OK)
+        st = zl_state_check(&ctx->state);
+    if (st == ZL_OK)
+        st = zl_style_check(&ctx->style);
+    if (st == ZL_OK)
+        st = zl_check_mesh(mesh, mvp == NULL);
+    if (st == ZL_OK)
+        st = zl_check_outline(mesh, outline);
+    if (st != ZL_OK)
+        return st;
+    src.mesh = mesh;
+    src.mvp = mvp;
+    src.state = &ctx->state;
+    src.cache = NULL;
+    src.width = ctx->target.width;
+    src.height = ctx->target.height;
+    zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
+                       (zl_format)ctx->target.format, ctx->target.width);
+    for (k = 0; k < outline->edge_count; k++) {
+        zl_active rec;
+        if (zl_outline_record(&src, mesh, outline, &ctx->style, k, &rec))
+            draw_rows(ctx, &rec, NULL, NULL, &ss);
+    }
+    return ZL_OK;
+}
+
 zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *mvp)
 {
     zl_source src;

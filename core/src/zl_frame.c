@@ -30,7 +30,9 @@ struct zl_frame_mesh {
 /* Per-mesh record of the styled features (only with cfg.styled). */
 typedef struct {
     zl_style style;
-    zl_lines lines;
+    zl_lines lines;     /* is_lines == 1 */
+    zl_mesh mesh;       /* is_lines == 2: the outlined mesh ... */
+    zl_outline outline; /* ... and its outline */
     uint8_t is_lines;
 } zl_frame_ext;
 
@@ -134,7 +136,8 @@ static int is_default_style(const zl_style *s)
 }
 
 /* Record the style of mesh record mi (default when NULL), and lines. */
-static void set_ext(zl_frame *f, unsigned mi, const zl_style *style, const zl_lines *lines)
+static void set_ext(zl_frame *f, unsigned mi, const zl_style *style, const zl_lines *lines, const zl_mesh *omesh,
+                    const zl_outline *outline)
 {
     zl_frame_ext *e = ext_of(f, mi);
     if (e == NULL)
@@ -143,19 +146,24 @@ static void set_ext(zl_frame *f, unsigned mi, const zl_style *style, const zl_li
         e->style = *style;
     else
         zl_style_default(&e->style);
-    e->is_lines = lines != NULL;
+    e->is_lines = lines != NULL ? 1 : (outline != NULL ? 2 : 0);
     if (lines != NULL)
         e->lines = *lines;
+    if (outline != NULL) {
+        e->mesh = *omesh;
+        e->outline = *outline;
+    }
 }
 
 static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
-                            const zl_style *style, const zl_lines *lines)
+                            const zl_style *style, const zl_lines *lines, const zl_mesh *omesh,
+                            const zl_outline *outline)
 {
     zl_frame_mesh *m;
     zl_status st = ZL_OK;
     if (f == NULL || state == NULL || f->planned)
         return ZL_ERR_ARG;
-    if (lines == NULL)
+    if (lines == NULL && outline == NULL)
         st = zl_check_geometry(mesh, mvp);
     if (st == ZL_OK)
         st = zl_state_check(state);
@@ -165,7 +173,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
         return st;
     if (state->shading == ZL_SHADE_GOURAUD && !f->cfg.gouraud)
         return ZL_ERR_CAPACITY;
-    if (!f->cfg.styled && (lines != NULL || (style != NULL && !is_default_style(style))))
+    if (!f->cfg.styled && (lines != NULL || outline != NULL || (style != NULL && !is_default_style(style))))
         return ZL_ERR_CAPACITY;
     if (!f->cfg.textured && zl_style_needs_planes(style))
         return ZL_ERR_CAPACITY;
@@ -181,7 +189,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     zl_span_state_init(&m->span, state, 1, 1, (zl_format)f->cfg.format, f->cfg.width);
     m->tri_base = f->triangle_total;
     m->vert_base = f->vertex_count;
-    set_ext(f, f->mesh_count, style, lines);
+    set_ext(f, f->mesh_count, style, lines, omesh, outline);
     f->mesh_count++;
     f->vertex_count += mesh->vertex_count;
     f->triangle_total += mesh->triangle_count;
@@ -190,13 +198,13 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
 
 zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state)
 {
-    return add_record(f, mesh, mvp, state, NULL, NULL);
+    return add_record(f, mesh, mvp, state, NULL, NULL, NULL, NULL);
 }
 
 zl_status zl_frame_add_mesh_styled(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
                                    const zl_style *style)
 {
-    return add_record(f, mesh, mvp, state, style, NULL);
+    return add_record(f, mesh, mvp, state, style, NULL, NULL, NULL);
 }
 
 zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *mvp, const zl_state *state,
@@ -212,7 +220,34 @@ zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *
         style = &d;
     }
     zl_lines_mesh(lines, &m);
-    return add_record(f, &m, mvp, state, style, lines);
+    return add_record(f, &m, mvp, state, style, lines, NULL, NULL);
+}
+
+zl_status zl_frame_add_outlines(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
+                                const zl_style *style, const zl_outline *outline)
+{
+    zl_mesh m;
+    zl_status st = zl_check_mesh(mesh, mvp == NULL);
+    zl_style d;
+    if (st == ZL_OK)
+        st = zl_check_outline(mesh, outline);
+    if (st != ZL_OK)
+        return st;
+    if (outline->edge_count > 65535u)
+        return ZL_ERR_CAPACITY;
+    if (style == NULL) {
+        zl_style_default(&d);
+        style = &d;
+    }
+    /* A view with the positions only: outline edges are transformed per
+     * segment, not cached. */
+    m = *mesh;
+    m.indices = NULL;
+    m.vertex_colors = NULL;
+    m.face_colors = NULL;
+    m.vertex_count = 0;
+    m.triangle_count = (uint16_t)outline->edge_count;
+    return add_record(f, &m, mvp, state, style, NULL, mesh, outline);
 }
 
 static zl_cached_vertex *cache_of(const zl_frame *f)
@@ -230,6 +265,15 @@ static void source_of(const zl_frame *f, const zl_frame_mesh *m, zl_source *s)
     s->height = f->cfg.height;
 }
 
+/* Record of primitive t of a lines or outline mesh record. */
+static int prim_record(const zl_frame *f, unsigned mi, const zl_source *s, uint32_t t, zl_active *rec)
+{
+    const zl_frame_ext *e = ext_of(f, mi);
+    if (e->is_lines == 2)
+        return zl_outline_record(s, &e->mesh, &e->outline, &e->style, t, rec);
+    return zl_lines_record(s, &e->lines, &e->style, &f->meshes[mi].state, t, rec);
+}
+
 /* Row range of lines primitive t (one record); 0 when it shows nothing.
  * Out of line, like the next one, so its record is not on the stack of the
  * clipping path. */
@@ -238,7 +282,7 @@ static ZL_NOINLINE unsigned classify_lines(const zl_frame *f, const zl_frame_mes
 {
     unsigned mi = (unsigned)(m - f->meshes);
     zl_active rec;
-    if (!zl_lines_record(s, &ext_of(f, mi)->lines, style_of(f, mi), &m->state, t, &rec))
+    if (!prim_record(f, mi, s, t, &rec))
         return 0;
     *first = rec.row;
     *end = rec.end;
@@ -412,7 +456,7 @@ static ZL_NOINLINE uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
         if (slot == ZL_LIST_END)
             break; /* cannot happen: planning bounded the peak */
         a = &f->pool[slot];
-        if (lines ? !zl_lines_record(&s, &ext_of(f, mi)->lines, sty, &m->state, id - m->tri_base, a)
+        if (lines ? !prim_record(f, mi, &s, id - m->tri_base, a)
                   : !zl_tri_piece(&s, sty, id - m->tri_base, &poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
             continue;
         f->free_head = a->next;

@@ -247,6 +247,15 @@ unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, co
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
                  zl_active *t, zl_gouraud *g, zl_texplanes *tp);
 
+/* ---- zl_outline.c */
+/* Is edge e of the outline drawn (silhouette, crease or border)? */
+int zl_outline_selected(const zl_source *s, const zl_mesh *mesh, const zl_outline *o, const zl_mesh_edge *e);
+/* Line record of edge k of an outline of `mesh` (s->mesh may be a view with
+ * its positions only); 0 when the edge is not drawn or not in view. */
+int zl_outline_record(const zl_source *s, const zl_mesh *mesh, const zl_outline *o, const zl_style *sty,
+                      uint32_t k, zl_active *out);
+zl_status zl_check_outline(const zl_mesh *mesh, const zl_outline *o);
+
 /* ---- zl_draw.c */
 zl_status zl_check_mesh(const zl_mesh *m, int pixel_space);
 /* ---- zl_matrix.c: zl_check_mesh, then the transform limits of zline.h

@@ -427,6 +427,42 @@ typedef struct {
     const zl_rgb *toon_colors;  /* toon_bands colours, darkest band first */
 } zl_style;
 
+/*
+ * OUTLINES. zl_mesh_edges lists every edge of a mesh once with the two
+ * triangles sharing it (the adjacency; a tool can run it offline and keep the
+ * list as a const array). An outline draws the selected edges as lines (the
+ * LINE RULE, depth-tested with the state, moved by style.offset_units so the
+ * faces they border do not hide them; about -1/16 of the depth range per
+ * pixel of a steep face is typical, see docs/FEATURES.md):
+ *   silhouettes  an edge between a front-facing and a back-facing triangle
+ *                (facing from the homogeneous winding of the clip-space
+ *                vertices, the rasteriser's own rule for visible triangles)
+ *   creases      an edge whose two face normals (model space) have a cosine
+ *                below crease_cos (Q16.16), i.e. a dihedral angle above the
+ *                threshold, drawn when one of its faces is front-facing
+ *   borders      an edge with one triangle
+ */
+#define ZL_NO_TRIANGLE 0xFFFFu
+
+typedef struct {
+    uint16_t v0, v1; /* vertex indices, v0 < v1 */
+    uint16_t t0, t1; /* the triangles sharing the edge; t1 = ZL_NO_TRIANGLE at a border */
+} zl_mesh_edge;
+
+/* Fill `edges` (capacity >= 3 * triangle_count entries) with the mesh's edge
+ * list, sorted by vertices; returns the number of edges (0 on an invalid
+ * mesh or too small a capacity). No memory beyond the list (in-place heap
+ * sort). An edge of three or more triangles gives one entry per pair. */
+uint32_t zl_mesh_edges(const zl_mesh *mesh, zl_mesh_edge *edges, uint32_t capacity);
+
+typedef struct {
+    const zl_mesh_edge *edges; /* from zl_mesh_edges, for the mesh drawn */
+    uint32_t edge_count;
+    zl_fixed crease_cos;       /* creases where cos(angle between normals) < this */
+    uint8_t silhouettes, creases, borders;
+    zl_rgb color;
+} zl_outline;
+
 /* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset, no
  * texture, screen-linear Gouraud. */
 void zl_style_default(zl_style *s);
@@ -477,6 +513,9 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
 /* Draw lines or points with ctx->state (depth, masks, colour) and ctx->style
  * (point size, line algorithm, offset units), by the LINE RULE above. */
 zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *mvp);
+/* Draw the outline of a mesh (see OUTLINES) with ctx->state and ctx->style,
+ * usually right after the mesh itself. */
+zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_outline *outline);
 
 /* -------------------------------------------------- scanline and band mode */
 
@@ -584,6 +623,10 @@ zl_status zl_frame_add_mesh_styled(zl_frame *f, const zl_mesh *mesh, const zl_ma
  * primitives of a frame, in max_triangles and in max_active). */
 zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *mvp,
                              const zl_state *state, const zl_style *style);
+/* Submit the outline of a mesh (needs cfg.styled): one primitive per edge of
+ * the list, as lines. */
+zl_status zl_frame_add_outlines(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
+                                const zl_style *style, const zl_outline *outline);
 /*
  * Pull form: render the next band and describe it in *band. Returns ZL_OK
  * with a band, ZL_DONE when all rows are out, or an error. With two colour
