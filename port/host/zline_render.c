@@ -662,7 +662,9 @@ static int write_rows(output *out, const void *color, int32_t cstride, const uin
     for (y = 0; y < rows; y++) {
         const uint16_t *drow =
             (const uint16_t *)(const void *)((const uint8_t *)depth + (size_t)y * (size_t)dstride);
-        if (o->shade == SHADE_DEPTH) {
+        /* dstride 0: the no-depth rows of --visibility, which option parsing
+         * never pairs with --shade depth (said here for static analysis) */
+        if (o->shade == SHADE_DEPTH && dstride != 0) {
             for (x = 0; x < o->width; x++) {
                 uint8_t *px = out->grey_row + 3 * (size_t)x;
                 if (drow[x] == CLEAR_DEPTH) {
