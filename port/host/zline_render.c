@@ -834,7 +834,8 @@ static int vis_row_out(void *user, const zl_vis_row *row)
 static zl_vec3 eye_of(const zl_mat4 *m)
 {
     double a[3][4], p[3];
-    int r, c, k, rows[3] = {0, 1, 3};
+    int r, c, k;
+    const int rows[3] = {0, 1, 3};
     zl_vec3 e;
     for (r = 0; r < 3; r++)
         for (c = 0; c < 4; c++)
