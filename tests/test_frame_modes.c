@@ -126,6 +126,7 @@ static void random_mesh(scene_mesh *m)
         m->style.polygon_back = (uint8_t)rand_range(0, 2);
         m->style.point_size = (uint8_t)(rand_range(0, 2) == 0 ? rand_range(1, 9) : 1);
         m->style.line_algo = (uint8_t)rand_range(0, 1);
+        m->style.line_aa = (uint8_t)(rand_range(0, 3) == 0);
         if (rand_range(0, 1)) {
             m->style.offset_factor = rand_range(-4 * ZL_FX_ONE, 4 * ZL_FX_ONE);
             m->style.offset_units = rand_range(-2000 * ZL_FX_ONE, 2000 * ZL_FX_ONE);

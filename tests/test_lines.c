@@ -455,6 +455,71 @@ static void test_points(void)
     TEST_ASSERT_EQUAL_UINT32(0, read_mask(got));
 }
 
+/* Antialiased lines: white on black, so each pixel holds its weight,
+ * round(255 f) below the ideal line and 255 minus that above, f the exact
+ * fraction of the minor coordinate (reference in exact integers). */
+static void test_antialiased_lines_against_the_weights(void)
+{
+    static uint8_t expect[W * H];
+    int i;
+    make_target();
+    ctx.state.color.r = 255;
+    ctx.state.color.g = 255;
+    ctx.state.color.b = 255;
+    ctx.style.line_aa = 1;
+    for (i = 0; i < 1500; i++) {
+        zl_fixed a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
+        int32_t reach = i % 3 == 0 ? 400 : 30;
+        int64_t X0, Y0, X1, Y1, dx, dy, k;
+        int xmajor, x, y;
+        a[0] = rand_range(-reach * 16, (W + reach) * 16) * 4096;
+        a[1] = rand_range(-reach * 16, (H + reach) * 16) * 4096;
+        b[0] = rand_range(-reach * 16, (W + reach) * 16) * 4096;
+        b[1] = rand_range(-reach * 16, (H + reach) * 16) * 4096;
+        X0 = pixel_of(a[0]);
+        Y0 = pixel_of(a[1]);
+        X1 = pixel_of(b[0]);
+        Y1 = pixel_of(b[1]);
+        dx = X1 - X0;
+        dy = Y1 - Y0;
+        xmajor = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+        memset(expect, 0, sizeof expect);
+        for (k = xmajor ? (X0 < X1 ? X0 : X1) : (Y0 < Y1 ? Y0 : Y1); k <= (xmajor ? (X0 < X1 ? X1 : X0) : (Y0 < Y1 ? Y1 : Y0)); k++) {
+            /* n = base + num / den exactly, den > 0 */
+            int64_t num = xmajor ? (k - X0) * dy : (k - Y0) * dx, den = xmajor ? dx : dy, fl, f, wl;
+            int64_t base = xmajor ? Y0 : X0;
+            if (den < 0) {
+                num = -num;
+                den = -den;
+            }
+            if (den == 0) {
+                num = 0;
+                den = 1;
+            }
+            fl = floor_div(num, den);
+            f = num - fl * den;                   /* fraction f / den */
+            wl = (f * 255 + den / 2) / den;       /* weight of floor + 1 */
+            for (x = 0; x < 2; x++) {
+                int64_t m = base + fl + x, w = x ? wl : 255 - wl;
+                int64_t px = xmajor ? k : m, py = xmajor ? m : k;
+                if (px >= 0 && px < W && py >= 0 && py < H)
+                    expect[py * W + px] = (uint8_t)w;
+            }
+        }
+        clear();
+        draw_segment(a, b, ZL_LINE_BRESENHAM);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++)
+                TEST_ASSERT_EQUAL_UINT8(expect[y * W + x], color[(y * W + x) * 3 + 1]);
+        clear();
+        draw_segment(b, a, ZL_LINE_BRESENHAM);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++)
+                TEST_ASSERT_EQUAL_UINT8(expect[y * W + x], color[(y * W + x) * 3 + 1]);
+    }
+    ctx.style.line_aa = 0;
+}
+
 static void test_invalid_arguments(void)
 {
     zl_fixed pos[6] = {0};
@@ -489,6 +554,7 @@ int main(void)
     RUN_TEST(test_depth_test_against_a_plane);
     RUN_TEST(test_strip_and_loop_cover_their_segments);
     RUN_TEST(test_points);
+    RUN_TEST(test_antialiased_lines_against_the_weights);
     RUN_TEST(test_invalid_arguments);
     return UNITY_END();
 }

@@ -44,8 +44,6 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
     out->r = color_q8(s->mesh, idx, 0);
     out->g = color_q8(s->mesh, idx, 1);
     out->b = color_q8(s->mesh, idx, 2);
-    out->u = 0;
-    out->v = 0;
     return 1;
 }
 
@@ -57,16 +55,15 @@ static int32_t texel_q8(zl_fixed c, uint16_t size)
     return (int32_t)(v < -lim ? -lim : (v > lim ? lim : v));
 }
 
-/* zl_vertex_clip plus the texture coordinates of the style. */
-static int vertex_clip_ex(const zl_source *s, const zl_style *sty, uint16_t idx, zl_cvert *out)
+/* Texture coordinates of vertex idx under the style (0 without a texture). */
+static void tex_coords(const zl_style *sty, uint16_t idx, int32_t *u, int32_t *v)
 {
-    if (!zl_vertex_clip(s, idx, out))
-        return 0;
+    *u = 0;
+    *v = 0;
     if (sty != NULL && sty->texture != NULL && sty->texcoords != NULL) {
-        out->u = texel_q8(sty->texcoords[idx * 2u], sty->texture->width);
-        out->v = texel_q8(sty->texcoords[idx * 2u + 1], sty->texture->height);
+        *u = texel_q8(sty->texcoords[idx * 2u], sty->texture->width);
+        *v = texel_q8(sty->texcoords[idx * 2u + 1], sty->texture->height);
     }
-    return 1;
 }
 
 /*
@@ -141,9 +138,6 @@ void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
     out->r = color_out(v->r);
     out->g = color_out(v->g);
     out->b = color_out(v->b);
-    out->u = v->u;
-    out->v = v->v;
-    out->w = s->mvp != NULL ? (v->w < 1 ? 1 : v->w) : ZL_FX_ONE;
 }
 
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
@@ -189,8 +183,8 @@ static int32_t lerp(int32_t a, int32_t b, int64_t t30)
  * parameter is always measured from the inside vertex, so the edge shared by
  * two triangles gives the same point in both: clipping stays watertight.
  */
-static void intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, int64_t dout, unsigned plane,
-                      zl_cvert *res)
+static int64_t intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, int64_t dout, unsigned plane,
+                         zl_cvert *res)
 {
     int64_t num = din, den = din - dout; /* den > 0, num < den */
     int64_t t;
@@ -207,8 +201,6 @@ static void intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, int6
     res->r = lerp(in->r, out->r, t);
     res->g = lerp(in->g, out->g, t);
     res->b = lerp(in->b, out->b, t);
-    res->u = lerp(in->u, out->u, t);
-    res->v = lerp(in->v, out->v, t);
     /* Put the new vertex exactly on the planes whose equation is simple. */
     if (plane == PLANE_NEAR)
         res->z = 0;
@@ -216,6 +208,7 @@ static void intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, int6
         res->z = res->w;
     else if (plane == PLANE_W && res->w < 1)
         res->w = 1;
+    return t;
 }
 
 /* Clip polygon src (n vertices) against one plane into dst; returns the count. */
@@ -230,9 +223,9 @@ static unsigned clip_plane(const zl_source *s, unsigned plane, const zl_cvert *s
             dst[m++] = *a;
         if ((da >= 0) != (db >= 0)) {
             if (da >= 0)
-                intersect(a, b, da, db, plane, &dst[m++]);
+                (void)intersect(a, b, da, db, plane, &dst[m++]);
             else
-                intersect(b, a, db, da, plane, &dst[m++]);
+                (void)intersect(b, a, db, da, plane, &dst[m++]);
         }
     }
     return m;
@@ -345,7 +338,7 @@ static void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *
 }
 
 /* All three vertices cached inside: the fast path of scanline mode. */
-static int polygon_from_cache(const zl_source *s, const zl_style *sty, const uint16_t *idx, zl_poly *out)
+static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *out)
 {
     unsigned k;
     for (k = 0; k < 3; k++) {
@@ -357,31 +350,18 @@ static int polygon_from_cache(const zl_source *s, const zl_style *sty, const uin
         w->r = (uint16_t)color_q8(s->mesh, idx[k], 0);
         w->g = (uint16_t)color_q8(s->mesh, idx[k], 1);
         w->b = (uint16_t)color_q8(s->mesh, idx[k], 2);
-        w->u = 0;
-        w->v = 0;
-        w->w = ZL_FX_ONE;
-        if (zl_style_needs_planes(sty)) {
-            /* w and the texture coordinates are not cached: the same
-             * transform as frame mode's gives the same values. */
-            zl_cvert cv;
-            if (vertex_clip_ex(s, sty, idx[k], &cv)) {
-                w->u = cv.u;
-                w->v = cv.v;
-                w->w = s->mvp != NULL ? (cv.w < 1 ? 1 : cv.w) : ZL_FX_ONE;
-            }
-        }
     }
     out->n = 3;
     return 1;
 }
 
-static int polygon_clipped(const zl_source *s, const zl_style *sty, const uint16_t *idx, zl_poly *out)
+static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out)
 {
     zl_cvert a[ZL_MAX_POLY], b[ZL_MAX_POLY];
     zl_cvert *src = a, *dst = b, *tmp;
     unsigned codes[3], all_out, any_out, plane, n = 3, k;
     for (k = 0; k < 3; k++) {
-        if (!vertex_clip_ex(s, sty, idx[k], &a[k]))
+        if (!zl_vertex_clip(s, idx[k], &a[k]))
             return 0;
         codes[k] = zl_outcode(s, &a[k]);
     }
@@ -414,18 +394,117 @@ int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_
 {
     const uint16_t *idx = &s->mesh->indices[t * 3u];
     int ok;
+    (void)sty;
     if (s->cache != NULL) {
         int16_t x0 = s->cache[idx[0]].x, x1 = s->cache[idx[1]].x, x2 = s->cache[idx[2]].x;
         if (x0 == ZL_CACHE_INVALID || x1 == ZL_CACHE_INVALID || x2 == ZL_CACHE_INVALID)
             return 0;
         if (x0 != ZL_CACHE_COMPLEX && x1 != ZL_CACHE_COMPLEX && x2 != ZL_CACHE_COMPLEX)
-            ok = polygon_from_cache(s, sty, idx, out);
+            ok = polygon_from_cache(s, idx, out);
         else
-            ok = polygon_clipped(s, sty, idx, out);
+            ok = polygon_clipped(s, idx, out);
     } else {
-        ok = polygon_clipped(s, sty, idx, out);
+        ok = polygon_clipped(s, idx, out);
     }
     return ok;
+}
+
+/* ---------------------------------------- texture coordinates through clipping */
+
+typedef struct {
+    zl_cvert c;
+    int32_t u, v; /* 1/256 texel */
+} tcvert;
+
+/* clip_plane with texture coordinates, interpolated with the parameter of
+ * the very same intersection. */
+static unsigned clip_plane_tex(const zl_source *s, unsigned plane, const tcvert *src, unsigned n, tcvert *dst)
+{
+    unsigned i, m = 0;
+    for (i = 0; i < n; i++) {
+        const tcvert *a = &src[i], *b = &src[(i + 1) % n];
+        int64_t da = plane_distance(s, plane, &a->c), db = plane_distance(s, plane, &b->c);
+        if (da >= 0)
+            dst[m++] = *a;
+        if ((da >= 0) != (db >= 0)) {
+            const tcvert *in = da >= 0 ? a : b, *out = da >= 0 ? b : a;
+            tcvert *r = &dst[m++];
+            int64_t t = intersect(&in->c, &out->c, da >= 0 ? da : db, da >= 0 ? db : da, plane, &r->c);
+            r->u = lerp(in->u, out->u, t);
+            r->v = lerp(in->v, out->v, t);
+        }
+    }
+    return m;
+}
+
+static int32_t w_of(const zl_source *s, int32_t w)
+{
+    return s->mvp != NULL ? (w < 1 ? 1 : w) : ZL_FX_ONE;
+}
+
+/* Clipped: the same steps as polygon_clipped, carrying u and v. Out of
+ * line (as the next one): only one of the two big frames is ever live. */
+static ZL_NOINLINE int tex_clipped(const zl_source *s, const zl_style *sty, const uint16_t *idx, zl_tpoly *out)
+{
+    tcvert a[ZL_MAX_POLY], b[ZL_MAX_POLY];
+    tcvert *src = a, *dst = b, *tmp;
+    unsigned codes[3], any_out, plane, n = 3, k;
+    for (k = 0; k < 3; k++) {
+        if (!zl_vertex_clip(s, idx[k], &a[k].c))
+            return 0;
+        tex_coords(sty, idx[k], &a[k].u, &a[k].v);
+        codes[k] = zl_outcode(s, &a[k].c);
+    }
+    any_out = codes[0] | codes[1] | codes[2];
+    if ((codes[0] & codes[1] & codes[2]) != 0)
+        return 0;
+    for (plane = 0; plane < PLANE_COUNT && n >= 3; plane++) {
+        if (!(any_out & (1u << plane)))
+            continue;
+        n = clip_plane_tex(s, plane, src, n, dst);
+        tmp = src;
+        src = dst;
+        dst = tmp;
+    }
+    if (n < 3)
+        return 0;
+    for (k = 0; k < n; k++) {
+        zl_project(s, &src[k].c, &out->p.v[k]);
+        out->u[k] = src[k].u;
+        out->v[k] = src[k].v;
+        out->w[k] = w_of(s, src[k].c.w);
+    }
+    out->p.n = n;
+    return 1;
+}
+
+/* Whether the triangle needs clipping (-1 when it cannot be transformed),
+ * with w and the texture coordinates of its vertices. */
+static ZL_NOINLINE int tex_vertices(const zl_source *s, const zl_style *sty, const uint16_t *idx, zl_tpoly *out)
+{
+    unsigned k, any_out = 0;
+    for (k = 0; k < 3; k++) {
+        zl_cvert c;
+        if (!zl_vertex_clip(s, idx[k], &c))
+            return -1;
+        tex_coords(sty, idx[k], &out->u[k], &out->v[k]);
+        out->w[k] = w_of(s, c.w);
+        any_out |= zl_outcode(s, &c);
+    }
+    return any_out != 0;
+}
+
+int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_tpoly *out)
+{
+    const uint16_t *idx = &s->mesh->indices[t * 3u];
+    int clip = tex_vertices(s, sty, idx, out);
+    if (clip < 0)
+        return 0;
+    if (clip)
+        return tex_clipped(s, sty, idx, out);
+    /* Not clipped: the geometry exactly as zl_tri_polygon_geom gives it
+     * (from the cache in scanline mode), attributes of the vertices. */
+    return zl_tri_polygon_geom(s, sty, t, &out->p);
 }
 
 void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly)

@@ -155,6 +155,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
+    int planes;
     if (ctx == NULL)
         return ZL_ERR_ARG;
     st = check_target(&ctx->target);
@@ -184,12 +185,16 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     }
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
+    planes = zl_style_needs_planes(&ctx->style);
     for (t = 0; t < mesh->triangle_count; t++) {
-        zl_poly poly;
-        if (!zl_tri_polygon_geom(&src, &ctx->style, t, &poly) || !may_draw(&src, &ctx->style, &poly))
+        zl_tpoly tpoly; /* the texture attributes are only filled when the style needs them */
+        zl_poly *poly = &tpoly.p;
+        if (!(planes ? zl_tri_polygon_tex(&src, &ctx->style, t, &tpoly)
+                     : zl_tri_polygon_geom(&src, &ctx->style, t, poly)) ||
+            !may_draw(&src, &ctx->style, poly))
             continue;
-        zl_tri_shade(&src, t, &poly);
-        draw_pieces(ctx, &src, t, &poly, &ss);
+        zl_tri_shade(&src, t, poly);
+        draw_pieces(ctx, &src, t, poly, &ss);
     }
     return ZL_OK;
 }

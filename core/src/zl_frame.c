@@ -132,7 +132,7 @@ static int is_default_style(const zl_style *s)
     return s->polygon_front == d.polygon_front && s->polygon_back == d.polygon_back &&
            s->point_size == d.point_size && s->line_algo == d.line_algo && s->offset_factor == d.offset_factor &&
            s->offset_units == d.offset_units && s->texture == d.texture && s->persp_gouraud == d.persp_gouraud &&
-           s->toon_bands == d.toon_bands;
+           s->toon_bands == d.toon_bands && s->line_aa == d.line_aa;
 }
 
 /* Record the style of mesh record mi (default when NULL), and lines. */
@@ -440,13 +440,16 @@ static ZL_NOINLINE uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
     const zl_style *sty = style_of(f, mi);
     int lines = sty != NULL && ext_of(f, mi)->is_lines;
     zl_source s;
-    zl_poly poly;
+    zl_tpoly tpoly; /* texture attributes only when the style needs them */
+    zl_poly *poly = &tpoly.p;
     unsigned k, n = 1;
     source_of(f, m, &s);
     if (!lines) {
-        if (!zl_tri_polygon_ex(&s, sty, id - m->tri_base, &poly))
+        if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, id - m->tri_base, &tpoly)
+                                         : zl_tri_polygon_geom(&s, sty, id - m->tri_base, poly)))
             return link;
-        n = zl_tri_pieces(&s, sty, id - m->tri_base, &poly);
+        zl_tri_shade(&s, id - m->tri_base, poly);
+        n = zl_tri_pieces(&s, sty, id - m->tri_base, poly);
     }
     while (*link != ZL_LIST_END && f->pool[*link].id < id)
         link = &f->pool[*link].next;
@@ -457,7 +460,7 @@ static ZL_NOINLINE uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
             break; /* cannot happen: planning bounded the peak */
         a = &f->pool[slot];
         if (lines ? !prim_record(f, mi, &s, id - m->tri_base, a)
-                  : !zl_tri_piece(&s, sty, id - m->tri_base, &poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
+                  : !zl_tri_piece(&s, sty, id - m->tri_base, poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
             continue;
         f->free_head = a->next;
         a->id = id;

@@ -26,15 +26,12 @@ typedef struct {
     int32_t x, y;       /* subpixels */
     uint32_t z;         /* window depth * 65535 * 65536, i.e. Q16 of the stored scale */
     uint16_t r, g, b;   /* colour, Q8 (0 .. 255 * 256) */
-    int32_t u, v;       /* texture coordinates, 1/256 texel (0 without a texture) */
-    int32_t w;          /* clip w, Q16.16 (>= 1) */
 } zl_wvert;
 
 /* Clip-space vertex carried through clipping. */
 typedef struct {
     int32_t x, y, z, w; /* Q16.16 */
     int32_t r, g, b;    /* colour, Q8 */
-    int32_t u, v;       /* texture coordinates, 1/256 texel */
 } zl_cvert;
 
 /* Cached window vertex of scanline mode: 8 bytes. x == ZL_CACHE_COMPLEX marks a
@@ -63,6 +60,15 @@ typedef struct {
     zl_rgb flat;        /* lit flat colour */
     uint8_t light;      /* lighting intensity 0..255 (255 with the light off) */
 } zl_poly;
+
+/* A polygon with texture attributes per vertex, for styles that need
+ * texture or perspective planes (kept apart so that zl_poly, which every
+ * triangle path holds on its stack, does not grow). */
+typedef struct {
+    zl_poly p;
+    int32_t u[ZL_MAX_POLY], v[ZL_MAX_POLY]; /* texture coordinates, 1/256 texel */
+    int32_t w[ZL_MAX_POLY];                 /* clip w, Q16.16, >= 1 */
+} zl_tpoly;
 
 /* Exact DDA edge stepper: at each row, x is the first pixel index whose centre
  * is at or right of the edge: x = ceil(N / den) with N = x * den - rem,
@@ -122,6 +128,7 @@ struct zl_active {
 #define ZL_KIND_TRI 0
 #define ZL_KIND_LINE 1
 #define ZL_KIND_POINT 2
+#define ZL_KIND_LINE_AA 3 /* as a line; left is the floor of the minor coordinate, rem its fraction */
 
 /* How the spans of one draw write their pixels. */
 typedef struct {
@@ -159,6 +166,8 @@ int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out);
 /* The same with a style: texture coordinates and w carried to the polygon
  * when the style has a texture or perspective Gouraud (sty may be NULL). */
 int zl_tri_polygon_ex(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out);
+/* Geometry (not shaded) and texture attributes of triangle t. */
+int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_tpoly *out);
 /* The same without the colours: geometry only, for classification. A polygon
  * that turns out to be drawn gets its flat colour and lighting from
  * zl_tri_shade (lighting costs a square root: only for drawn triangles). */
@@ -175,7 +184,8 @@ int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert 
                  const zl_wvert *c, const zl_poly *poly, const zl_state *st, uint16_t width,
                  uint16_t height);
 /* zl_tri_setup plus the texture / perspective planes into tp when the style
- * asks for them (tp and sty may be NULL). */
+ * asks for them (tp and sty may be NULL); then poly must be the p of a
+ * zl_tpoly and a, b, c vertices of it. */
 int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
                     const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st,
                     uint16_t width, uint16_t height);
@@ -229,6 +239,8 @@ int zl_point_make(const zl_source *s, uint16_t idx, zl_lvert *out);
 /* Set up a line record for the target size: 1 if it has pixels in view. */
 int zl_line_setup(zl_active *t, const zl_segment *seg, unsigned algo, int64_t offset_q20,
                   uint16_t width, uint16_t height);
+/* The same for an antialiased line (two pixels per major step). */
+int zl_line_setup_aa(zl_active *t, const zl_segment *seg, int64_t offset_q20, uint16_t width, uint16_t height);
 /* Set up a point record: 1 if it has pixels in view. */
 int zl_point_setup(zl_active *t, const zl_lvert *p, zl_rgb rgb, unsigned size, int64_t offset_q20,
                    uint16_t width, uint16_t height);

@@ -33,6 +33,7 @@ void zl_style_default(zl_style *s)
     s->persp_gouraud = 0;
     s->toon_bands = 0;
     s->toon_colors = NULL;
+    s->line_aa = 0;
 }
 
 static int pow2_size(uint16_t n)
@@ -50,7 +51,7 @@ zl_status zl_style_check(const zl_style *s)
         return ZL_ERR_RANGE;
     if (s->offset_factor > ZL_FX_INT(256) || s->offset_factor < -ZL_FX_INT(256))
         return ZL_ERR_RANGE;
-    if (s->tex_mapping > ZL_TEX_PERSPECTIVE || s->persp_gouraud > 1 || (s->toon_bands > 0 && s->toon_colors == NULL))
+    if (s->tex_mapping > ZL_TEX_PERSPECTIVE || s->persp_gouraud > 1 || s->line_aa > 1 || (s->toon_bands > 0 && s->toon_colors == NULL))
         return ZL_ERR_ARG;
     if (s->tex_every > 1 && (s->tex_every > 64 || (s->tex_every & (s->tex_every - 1u)) != 0))
         return ZL_ERR_RANGE;
@@ -220,6 +221,70 @@ int zl_line_setup(zl_active *t, const zl_segment *seg, unsigned algo, int64_t of
     return 1;
 }
 
+int zl_line_setup_aa(zl_active *t, const zl_segment *seg, int64_t offset_q20, uint16_t width, uint16_t height)
+{
+    int32_t xa = pixel_of(seg->a.x), ya = pixel_of(seg->a.y), xb = pixel_of(seg->b.x), yb = pixel_of(seg->b.y);
+    int64_t za = offset_depth(seg->a.z, offset_q20), zb = offset_depth(seg->b.z, offset_q20);
+    int64_t dxab = (int64_t)xb - xa, dyab = (int64_t)yb - ya;
+    int xmajor = (dxab < 0 ? -dxab : dxab) >= (dyab < 0 ? -dyab : dyab);
+    int a_first = xmajor ? xa <= xb : ya <= yb;
+    int64_t m0 = xmajor ? (a_first ? xa : xb) : (a_first ? ya : yb);
+    int64_t n0 = xmajor ? (a_first ? ya : yb) : (a_first ? xa : xb);
+    int64_t dm = xmajor ? (a_first ? dxab : -dxab) : (a_first ? dyab : -dyab);
+    int64_t dn = xmajor ? (a_first ? dyab : -dyab) : (a_first ? dxab : -dxab);
+    int64_t z0 = a_first ? za : zb, z1 = a_first ? zb : za;
+    unsigned skip0 = a_first ? (seg->skip & 1u) : (seg->skip & 2u), skip1 = a_first ? (seg->skip & 2u) : (seg->skip & 1u);
+    int64_t lmaj = xmajor ? width : height, lmin = xmajor ? height : width;
+    /* floor(n) = N0 + floor(u DN / DM) = N0 + ceil((u DN - (DM - 1)) / DM) */
+    int64_t a = dm == 0 ? 0 : dn, d = dm == 0 ? 1 : dm, c = -(d - 1);
+    int64_t lo = skip0 ? 1 : 0, hi = skip1 ? dm - 1 : dm, us, ue, n, q, as, step, dz;
+    int dir;
+    lo = max64(lo, -m0);
+    hi = min64(hi, lmaj - 1 - m0);
+    keep_greater(a, (-n0 - 2) * d - c, &lo, &hi);   /* floor(n) >= -1 */
+    keep_at_most(a, (lmin - 1 - n0) * d - c, &lo, &hi); /* floor(n) <= lmin - 1 */
+    if (lo > hi)
+        return 0;
+    dir = (xmajor && a < 0) ? -1 : 1;
+    us = dir > 0 ? lo : hi;
+    ue = dir > 0 ? hi : lo;
+    n = c + us * a;
+    q = zl_ceil_div64(n, d);
+    as = dir * a;
+    step = zl_floor_div64(as, d);
+    t->left.x = (int32_t)(n0 + q);
+    t->left.rem = (int32_t)(q * d - n);
+    t->left.den = (int32_t)d;
+    t->left.step = (int32_t)step;
+    t->left.rstep = (int32_t)(as - step * d);
+    t->ax = (int32_t)(m0 + us);
+    t->right.x = (int32_t)(hi - lo + 1);
+    t->right.step = dir;
+    t->right.rem = t->right.rstep = t->right.den = 0;
+    dz = dm == 0 ? 0 : zl_round_div64((z1 - z0) * 65536, dm);
+    t->z.row = z0 * 65536 + us * dz;
+    t->z.dx = dir * dz;
+    t->z.dy = 0;
+    if (xmajor) {
+        int64_t last = n0 + zl_ceil_div64(c + ue * a, d) + 2;
+        t->row = (int16_t)max64(t->left.x, 0);
+        t->end = (int16_t)min64(last, height);
+    } else {
+        t->row = (int16_t)(m0 + lo);
+        t->end = (int16_t)(m0 + hi + 1);
+    }
+    if (t->row >= t->end)
+        return 0;
+    t->mid = t->end;
+    t->lower_is_left = (uint8_t)xmajor;
+    t->zlo = t->zhi = 0;
+    t->kind = ZL_KIND_LINE_AA;
+    t->rgb[0] = seg->rgb.r;
+    t->rgb[1] = seg->rgb.g;
+    t->rgb[2] = seg->rgb.b;
+    return 1;
+}
+
 int zl_point_setup(zl_active *t, const zl_lvert *p, zl_rgb rgb, unsigned size, int64_t offset_q20, uint16_t width,
                    uint16_t height)
 {
@@ -291,6 +356,8 @@ int zl_lines_record(const zl_source *s, const zl_lines *l, const zl_style *sty, 
         if (!zl_segment_make(s, (uint16_t)ia, (uint16_t)ib, skip_a, skip_b, &seg))
             return 0;
         seg.rgb = rgb;
+        if (sty->line_aa)
+            return zl_line_setup_aa(out, &seg, units_offset(sty), s->width, s->height);
         return zl_line_setup(out, &seg, sty->line_algo, units_offset(sty), s->width, s->height);
     }
 }
@@ -379,6 +446,8 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
             if (!zl_segment_make(s, idx[k], idx[(k + 1) % 3u], 0, 0, &seg))
                 return 0;
             seg.rgb = flat;
+            if (sty->line_aa)
+                return zl_line_setup_aa(t, &seg, off, s->width, s->height);
             return zl_line_setup(t, &seg, sty->line_algo, off, s->width, s->height);
         } else {
             zl_lvert p;

@@ -195,6 +195,9 @@ int zl_outline_record(const zl_source *s, const zl_mesh *mesh, const zl_outline 
     if (!zl_segment_make(s, e->v0, e->v1, 0, 0, &seg))
         return 0;
     seg.rgb = o->color;
+    if (sty->line_aa)
+        return zl_line_setup_aa(out, &seg, (int64_t)sty->offset_units * (1 << (ZL_ATTR_FRAC - 16)), s->width,
+                                s->height);
     return zl_line_setup(out, &seg, sty->line_algo, (int64_t)sty->offset_units * (1 << (ZL_ATTR_FRAC - 16)),
                          s->width, s->height);
 }

@@ -177,16 +177,23 @@ int zl_style_needs_planes(const zl_style *sty)
 /* Texture and perspective planes (see zl_texplanes). q_k = 2^24 wmin / w_k:
  * 1/w up to a per-triangle scale, which cancels in (u q) / q. */
 static void tex_setup(zl_texplanes *tp, zl_gouraud *g, const zl_style *sty, const zl_wvert *const *v,
-                      const plane_frame *pf, const zl_state *st)
+                      const zl_poly *poly, const plane_frame *pf, const zl_state *st)
 {
-    int64_t q[3], a[3], b[3];
-    int32_t wmin = v[0]->w;
+    /* poly is the p of a zl_tpoly (zl_tri_setup_ex's contract): the
+     * attributes of vertex v[k] are at its index in poly->v. */
+    const zl_tpoly *tpoly = (const zl_tpoly *)(const void *)poly;
+    int64_t q[3], a[3], b[3], u[3], vv[3], w[3], wmin;
     int k, persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
-    for (k = 1; k < 3; k++)
-        if (v[k]->w < wmin)
-            wmin = v[k]->w;
     for (k = 0; k < 3; k++) {
-        q[k] = zl_round_div64((int64_t)wmin << 24, v[k]->w);
+        size_t i = (size_t)(v[k] - poly->v);
+        u[k] = tpoly->u[i];
+        vv[k] = tpoly->v[i];
+        w[k] = tpoly->w[i];
+    }
+    wmin = w[0] < w[1] ? w[0] : w[1];
+    wmin = wmin < w[2] ? wmin : w[2];
+    for (k = 0; k < 3; k++) {
+        q[k] = zl_round_div64(wmin << 24, w[k]);
         if (q[k] < 256)
             q[k] = 256; /* a w ratio beyond 2^16 inside one triangle */
     }
@@ -195,8 +202,8 @@ static void tex_setup(zl_texplanes *tp, zl_gouraud *g, const zl_style *sty, cons
     memset(&tp->v, 0, sizeof tp->v);
     if (sty->texture != NULL && sty->texcoords != NULL) {
         for (k = 0; k < 3; k++) {
-            a[k] = persp ? zl_floor_shift64((int64_t)v[k]->u * q[k] + ((int64_t)1 << 23), 24) : v[k]->u;
-            b[k] = persp ? zl_floor_shift64((int64_t)v[k]->v * q[k] + ((int64_t)1 << 23), 24) : v[k]->v;
+            a[k] = persp ? zl_floor_shift64(u[k] * q[k] + ((int64_t)1 << 23), 24) : u[k];
+            b[k] = persp ? zl_floor_shift64(vv[k] * q[k] + ((int64_t)1 << 23), 24) : vv[k];
         }
         plane_setup(&tp->u, pf, a[0], a[1], a[2]);
         plane_setup(&tp->v, pf, b[0], b[1], b[2]);
@@ -288,7 +295,7 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
     }
     t->light = poly->light;
     if (tp != NULL && zl_style_needs_planes(sty))
-        tex_setup(tp, g, sty, v, &pf, st);
+        tex_setup(tp, g, sty, v, poly, &pf, st);
     return 1;
 }
 
@@ -375,15 +382,24 @@ static inline void put_pixel(uint8_t *p, unsigned bpp, const uint8_t *pix, const
         p[2] = (uint8_t)((p[2] & keep[2]) | (pix[2] & (uint8_t)~keep[2]));
 }
 
+/* Whether a 32-bit stepper stays inside [0, limit) over n pixels: then the
+ * per-pixel clamps can go (both ends checked; the values are linear). */
+static int stays_below(uint32_t start, uint32_t step, int32_t n, uint32_t limit)
+{
+    int64_t end = (int64_t)start + (int64_t)(n - 1) * (int32_t)step;
+    return start < limit && end >= 0 && end < (int64_t)limit;
+}
+
 /* The common case in its own loop: RGB565 (either byte order), all channels,
- * depth LESS with write. `func` is a constant at each call, so the compiler
- * specialises the depth test. */
-static inline void span_flat_565(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
-                                 uint32_t dz, uint16_t pixel)
+ * depth LESS or LEQUAL with write. `func` and `clamp` are constants at each
+ * call, so the compiler specialises the loop: without clamping it is a shift,
+ * a compare, two stores and an add per pixel. */
+static inline void span_flat_565(unsigned func, int clamp, uint16_t *crow, uint16_t *zrow, int32_t n,
+                                 uint32_t z, uint32_t dz, uint16_t pixel)
 {
     int32_t i;
     for (i = 0; i < n; i++) {
-        uint32_t d = depth_of(z);
+        uint32_t d = clamp ? depth_of(z) : z >> 14;
         if (depth_pass(func, d, zrow[i])) {
             zrow[i] = (uint16_t)d;
             crow[i] = pixel;
@@ -399,12 +415,17 @@ static void span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, in
     int32_t i;
     if (bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 &&
         (func == ZL_LESS || func == ZL_LEQUAL)) {
-        uint16_t pixel;
+        uint16_t pixel, *c16 = (uint16_t *)(void *)crow;
+        int exact = stays_below(z, dz, n, 65536u << 14);
         memcpy(&pixel, pix, 2);
-        if (func == ZL_LESS)
-            span_flat_565(ZL_LESS, (uint16_t *)(void *)crow, zrow, n, z, dz, pixel);
+        if (func == ZL_LESS && exact)
+            span_flat_565(ZL_LESS, 0, c16, zrow, n, z, dz, pixel);
+        else if (func == ZL_LESS)
+            span_flat_565(ZL_LESS, 1, c16, zrow, n, z, dz, pixel);
+        else if (exact)
+            span_flat_565(ZL_LEQUAL, 0, c16, zrow, n, z, dz, pixel);
         else
-            span_flat_565(ZL_LEQUAL, (uint16_t *)(void *)crow, zrow, n, z, dz, pixel);
+            span_flat_565(ZL_LEQUAL, 1, c16, zrow, n, z, dz, pixel);
         return;
     }
     for (i = 0; i < n; i++) {
@@ -428,8 +449,75 @@ static inline unsigned channel_of(uint32_t c)
     return v;
 }
 
+static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                 uint32_t dz, const uint32_t *c, const uint32_t *dc);
+
+/* Gouraud into RGB565 with no clamping needed (checked per span): the
+ * channels are packed straight from their Q16 steppers. `swap` stores the
+ * byte-swapped value (RGB565_BE on a little-endian machine). */
+static inline void span_gouraud_565(unsigned func, int swap, uint16_t *crow, uint16_t *zrow, int32_t n,
+                                    uint32_t z, uint32_t dz, const uint32_t *c, const uint32_t *dc)
+{
+    uint32_t r = c[0], g = c[1], b = c[2];
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = z >> 14;
+        if (depth_pass(func, d, zrow[i])) {
+            uint32_t v = ((r >> 8) & 0xF800u) | ((g >> 13) & 0x07E0u) | (b >> 19);
+            zrow[i] = (uint16_t)d;
+            crow[i] = (uint16_t)(swap ? ((v >> 8) | (v << 8)) : v);
+        }
+        z += dz;
+        r += dc[0];
+        g += dc[1];
+        b += dc[2];
+    }
+}
+
+static int little_endian(void)
+{
+    const uint16_t probe = 1;
+    uint8_t first;
+    memcpy(&first, &probe, 1);
+    return first == 1;
+}
+
+/* The Gouraud fast path applies: RGB565, every channel, LESS or LEQUAL with
+ * depth write, an aligned row, and no stepper leaving its range. */
+static int gouraud_fast(const zl_span_state *ss, const uint8_t *crow, int32_t n, uint32_t z, uint32_t dz,
+                        const uint32_t *c, const uint32_t *dc)
+{
+    int k;
+    if (ss->bpp != 2 || !ss->zwrite || ss->keep[0] != 0 || ss->keep[1] != 0 || ((uintptr_t)crow & 1u) != 0 ||
+        (ss->func != ZL_LESS && ss->func != ZL_LEQUAL) || !stays_below(z, dz, n, 65536u << 14))
+        return 0;
+    for (k = 0; k < 3; k++)
+        if (!stays_below(c[k], dc[k], n, 256u << 16))
+            return 0;
+    return 1;
+}
+
 static void span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                          uint32_t dz, const uint32_t *c, const uint32_t *dc)
+{
+    if (gouraud_fast(ss, crow, n, z, dz, c, dc)) {
+        uint16_t *c16 = (uint16_t *)(void *)crow;
+        int swap = ss->format == ZL_FORMAT_RGB565_BE && little_endian();
+        if (ss->func == ZL_LESS && swap)
+            span_gouraud_565(ZL_LESS, 1, c16, zrow, n, z, dz, c, dc);
+        else if (ss->func == ZL_LESS)
+            span_gouraud_565(ZL_LESS, 0, c16, zrow, n, z, dz, c, dc);
+        else if (swap)
+            span_gouraud_565(ZL_LEQUAL, 1, c16, zrow, n, z, dz, c, dc);
+        else
+            span_gouraud_565(ZL_LEQUAL, 0, c16, zrow, n, z, dz, c, dc);
+        return;
+    }
+    span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
+}
+
+static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                 uint32_t dz, const uint32_t *c, const uint32_t *dc)
 {
     uint32_t r = c[0], g = c[1], b = c[2];
     unsigned func = ss->func, bpp = ss->bpp;
@@ -798,9 +886,115 @@ static inline void plot(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, 
         put_pixel(crow + (size_t)x * ss->bpp, ss->bpp, pix, ss->keep);
 }
 
+/* Blend colour (r, g, b) into pixel x with weight w (0..255), after the
+ * depth test; antialiased lines never write depth. */
+static void blend(const zl_span_state *ss, const zl_active *t, uint8_t *crow, uint16_t *zrow, int32_t x, uint32_t d,
+                  unsigned w)
+{
+    uint8_t *p, pix[3] = {0, 0, 0};
+    unsigned old[3], k;
+    if (w == 0 || x < 0 || x >= ss->width || ss->bpp == 0)
+        return;
+    if (ss->func != ZL_ALWAYS && !depth_pass(ss->func, d, zrow[x]))
+        return;
+    p = crow + (size_t)x * ss->bpp;
+    if (ss->format == ZL_FORMAT_RGB888) {
+        old[0] = p[0];
+        old[1] = p[1];
+        old[2] = p[2];
+    } else {
+        uint16_t v;
+        unsigned r5, g6, b5;
+        if (ss->format == ZL_FORMAT_RGB565)
+            memcpy(&v, p, 2);
+        else
+            v = (uint16_t)(((unsigned)p[0] << 8) | p[1]);
+        r5 = v >> 11;
+        g6 = (v >> 5) & 63u;
+        b5 = v & 31u;
+        old[0] = (r5 << 3) | (r5 >> 2);
+        old[1] = (g6 << 2) | (g6 >> 4);
+        old[2] = (b5 << 3) | (b5 >> 2);
+    }
+    for (k = 0; k < 3; k++)
+        old[k] = (old[k] * (255u - w) + t->rgb[k] * w + 127u) / 255u;
+    pack_color((zl_format)ss->format, old[0], old[1], old[2], pix);
+    put_pixel(p, ss->bpp, pix, ss->keep);
+}
+
+/* Weight (0..255) of the pixel below the ideal line: its distance to the
+ * upper pixel's centre, the fraction f / D of a pixel. */
+static inline unsigned aa_weight(const zl_edge *e)
+{
+    int64_t f = (int64_t)e->den - 1 - e->rem;
+    return (unsigned)((f * 255 + e->den / 2) / e->den);
+}
+
+static void aa_step(zl_active *t)
+{
+    t->ax += t->right.step;
+    edge_step(&t->left);
+    t->z.row += t->z.dx;
+    t->right.x--;
+}
+
+/* Antialiased line row: two pixels per column (x-major) or row (y-major),
+ * rows floor(n) and floor(n) + 1 of the ideal minor coordinate n, weighted
+ * by their distance to it. An x-major row r takes the columns whose floor(n)
+ * is r - 1 (as the lower pixel) or r (as the upper one); the record stays at
+ * the first column of the row's run. */
+static int aa_row(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
+{
+    int32_t r = t->row;
+    if (!t->lower_is_left) {
+        unsigned w = aa_weight(&t->left);
+        uint32_t d = line_depth(t->z.row);
+        blend(ss, t, crow, zrow, t->left.x, d, 255u - w);
+        blend(ss, t, crow, zrow, t->left.x + 1, d, w);
+        if (t->right.x > 1)
+            aa_step(t);
+        else
+            t->row = t->end;
+    } else {
+        zl_active l = *t;
+        int saved = 0;
+        while (l.right.x > 0 && l.left.x <= r) {
+            unsigned w = aa_weight(&l.left);
+            uint32_t d = line_depth(l.z.row);
+            if (l.left.x == r - 1) {
+                blend(ss, t, crow, zrow, l.ax, d, w);
+            } else {
+                if (!saved) {
+                    t->left = l.left;
+                    t->ax = l.ax;
+                    t->right.x = l.right.x;
+                    t->z.row = l.z.row;
+                    saved = 1;
+                }
+                blend(ss, t, crow, zrow, l.ax, d, 255u - w);
+            }
+            aa_step(&l);
+        }
+        if (!saved) {
+            /* nothing of this run reaches the next row's upper pixels */
+            t->left = l.left;
+            t->ax = l.ax;
+            t->right.x = l.right.x;
+            t->z.row = l.z.row;
+            if (l.right.x == 0)
+                t->row = t->end;
+        }
+    }
+    if (t->row < t->end)
+        t->row++;
+    return t->row < t->end;
+}
+
 int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row)
 {
     uint8_t pix[3] = {0, 0, 0};
+    if (t->kind == ZL_KIND_LINE_AA)
+        return aa_row(t, ss, color_row, depth_row);
     pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
     if (t->kind == ZL_KIND_POINT) {
         uint32_t d = line_depth(t->z.row);

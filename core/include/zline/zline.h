@@ -332,6 +332,17 @@ zl_status zl_state_check(const zl_state *s);
  *   and points drawn with zl_draw_lines have no slope: they move by
  *   units * r only. The result is clamped to the depth range.
  */
+/*
+ * ANTIALIASED LINES (style.line_aa): between the same endpoint pixels as the
+ *   LINE RULE, every column (x-major) or row (y-major) u lights the two
+ *   pixels nearest to the ideal line n(u) = N0 + u DN / DM: floor(n) with
+ *   weight 1 - f and floor(n) + 1 with weight f, f = n - floor(n), as
+ *   round(255 * weight). Each is blended into the colour buffer,
+ *   new = (old (255 - w) + colour w) / 255 rounded, per channel (RGB565 is
+ *   widened to 8 bits first), after the depth test; antialiased lines never
+ *   write depth. A weight of 0 leaves the pixel alone. Strips and loops leave
+ *   out the shared column as above, so a shared vertex is blended once.
+ */
 #define ZL_MAX_POINT_SIZE 64
 
 /*
@@ -425,6 +436,7 @@ typedef struct {
     uint8_t persp_gouraud;      /* 1: perspective-correct Gouraud colours */
     uint8_t toon_bands;         /* toon shading: 0 off, else 1 .. 255 bands (see TOON) */
     const zl_rgb *toon_colors;  /* toon_bands colours, darkest band first */
+    uint8_t line_aa;            /* 1: antialiased lines (see ANTIALIASED LINES) */
 } zl_style;
 
 /*
