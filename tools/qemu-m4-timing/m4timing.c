@@ -6,6 +6,7 @@
  * choices below where the table gives a range.
  *
  *   qemu-system-arm ... -plugin path/m4timing.so,mark=0x1234,out=marks.txt[,p=2][,div=12]
+ *       [,profile=FILE[,from=I,to=J]]
  *
  * Cost model (cycles):
  *   data processing, moves, compares, shifts, extends, IT, hints     1
@@ -31,6 +32,16 @@
  *   MARK index instructions cycles
  * and a final TOTAL line. The instruction counts let a reader check the
  * plugin against QEMU's -icount timer counts of the same intervals.
+ *
+ * Profile (profile=FILE): executions of every translated block are counted
+ * and, at exit, FILE gets one line "PC COUNT" (hex address, decimal count)
+ * per guest instruction that ran: COUNT is how many times it executed (an
+ * address translated more than once appears once per translation; sum them).
+ * With from=I,to=J only blocks executed from the entry of mark number I up to
+ * (not including) the entry of mark number J are counted: exactly the
+ * instructions that the MARK lines count between those two marks, i.e. the
+ * interval with mark()'s own instructions included. A "# total" line gives
+ * the sum. port/cortex-m/bench/profile.sh maps the addresses to functions.
  *
  * QEMU 7.2 ships plugin support but Debian installs no qemu-plugin.h: the
  * few declarations used here are copied from QEMU 7.2's API (version 1).
@@ -92,11 +103,18 @@ typedef struct {
     uint8_t end;         /* END_*: how the last instruction leaves the block */
     uint8_t first_kind;  /* K_* of the first instruction */
     uint8_t last_kind;   /* K_* of the last one */
+    uint64_t execs;      /* executions while profiling */
+    uint32_t *pcs;       /* instruction addresses, for the profile */
 } block;
 
 static unsigned penalty = 2, div_cycles = 12;
 static uint64_t mark_addr = UINT64_MAX;
 static const char *out_path = "m4timing.txt";
+static const char *profile_path;
+static long prof_from = -1, prof_to = -1; /* mark numbers; -1: whole run */
+static int profiling = 1;
+static block **blocks;
+static size_t block_count, block_cap;
 
 static uint64_t insns, cycles, divs, taken;
 static const block *prev;
@@ -205,7 +223,7 @@ static insn_class classify(unsigned hw1, unsigned hw2, int wide)
 
 static void block_exec(unsigned int vcpu, void *udata)
 {
-    const block *b = (const block *)udata;
+    block *b = (block *)udata;
     (void)vcpu;
     if (prev != NULL) {
         if (prev->end == END_COND && b->vaddr != prev->fallthrough) {
@@ -224,8 +242,12 @@ static void block_exec(unsigned int vcpu, void *udata)
         }
         marks[mark_count].insns = insns;
         marks[mark_count].cycles = cycles;
+        if (prof_from >= 0)
+            profiling = (long)mark_count >= prof_from && (long)mark_count < prof_to;
         mark_count++;
     }
+    if (profiling)
+        b->execs++;
     insns += b->insns;
     cycles += b->cycles;
     divs += b->divs;
@@ -242,6 +264,16 @@ static void block_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
     if (b == NULL)
         abort();
     b->vaddr = qemu_plugin_tb_vaddr(tb);
+    if (profile_path != NULL) {
+        b->pcs = calloc(n ? n : 1, sizeof *b->pcs);
+        if (block_count == block_cap) {
+            block_cap = block_cap ? 2 * block_cap : 4096;
+            blocks = realloc(blocks, block_cap * sizeof *blocks);
+        }
+        if (b->pcs == NULL || blocks == NULL)
+            abort();
+        blocks[block_count++] = b;
+    }
     for (i = 0; i < n; i++) {
         struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
         const uint8_t *d = (const uint8_t *)qemu_plugin_insn_data(insn);
@@ -267,11 +299,37 @@ static void block_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
         b->last_kind = (uint8_t)c.kind;
         b->end = c.branch == 0 ? END_PLAIN : (c.branch == END_ALWAYS && !in_it) ? END_ALWAYS : END_COND;
         b->fallthrough = qemu_plugin_insn_vaddr(insn) + size;
+        if (b->pcs != NULL)
+            b->pcs[i] = (uint32_t)qemu_plugin_insn_vaddr(insn);
         prev_kind = c.kind;
     }
     /* the first instruction's load cost assumed not pipelined (2); the
      * exec callback takes 1 off when the previous block ended in a load/store */
     qemu_plugin_register_vcpu_tb_exec_cb(tb, block_exec, QEMU_PLUGIN_CB_NO_REGS, b);
+}
+
+static void write_profile(void)
+{
+    FILE *f = fopen(profile_path, "w");
+    uint64_t total = 0;
+    size_t i, k;
+    char msg[256];
+    if (f == NULL) {
+        snprintf(msg, sizeof msg, "m4timing: cannot write %s\n", profile_path);
+        qemu_plugin_outs(msg);
+        return;
+    }
+    fprintf(f, "# m4timing profile: PC executions; marks %ld..%ld (-1: whole run)\n", prof_from, prof_to);
+    for (i = 0; i < block_count; i++) {
+        const block *b = blocks[i];
+        if (b->execs == 0)
+            continue;
+        for (k = 0; k < b->insns; k++)
+            fprintf(f, "%08" PRIx32 " %" PRIu64 "\n", b->pcs[k], b->execs);
+        total += b->execs * b->insns;
+    }
+    fprintf(f, "# total %" PRIu64 "\n", total);
+    fclose(f);
 }
 
 static void at_exit(qemu_plugin_id_t id, void *udata)
@@ -293,6 +351,8 @@ static void at_exit(qemu_plugin_id_t id, void *udata)
     fprintf(f, "TOTAL insns %" PRIu64 " cycles %" PRIu64 " divisions %" PRIu64 " taken_cond_branches %" PRIu64 "\n",
             insns, cycles, divs, taken);
     fclose(f);
+    if (profile_path != NULL)
+        write_profile();
 }
 
 QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *info, int argc, char **argv)
@@ -311,11 +371,23 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
             penalty = (unsigned)strtoul(argv[i] + 2, NULL, 0);
         else if (strncmp(argv[i], "div=", 4) == 0)
             div_cycles = (unsigned)strtoul(argv[i] + 4, NULL, 0);
+        else if (strncmp(argv[i], "profile=", 8) == 0)
+            profile_path = argv[i] + 8;
+        else if (strncmp(argv[i], "from=", 5) == 0)
+            prof_from = strtol(argv[i] + 5, NULL, 0);
+        else if (strncmp(argv[i], "to=", 3) == 0)
+            prof_to = strtol(argv[i] + 3, NULL, 0);
         else {
-            qemu_plugin_outs("m4timing: arguments: mark=ADDR out=FILE p=CYCLES div=CYCLES\n");
+            qemu_plugin_outs("m4timing: arguments: mark=ADDR out=FILE p=CYCLES div=CYCLES profile=FILE from=I to=J\n");
             return -1;
         }
     }
+    if ((prof_from >= 0) != (prof_to >= 0) || prof_to < prof_from) {
+        qemu_plugin_outs("m4timing: profile interval needs both from=I and to=J, I <= J\n");
+        return -1;
+    }
+    if (prof_from >= 0)
+        profiling = 0;
     qemu_plugin_register_vcpu_tb_trans_cb(id, block_trans);
     qemu_plugin_register_atexit_cb(id, at_exit, NULL);
     return 0;
