@@ -252,15 +252,51 @@ static int compare_band(void *user, const zl_band *b)
     return 0;
 }
 
+/* Guard bytes around the work buffer: render_and_compare hands zline
+ * exactly zl_frame_bytes() bytes starting WORK_GUARD bytes into `work`, and
+ * the WORK_GUARD bytes on each side (colour and depth bands, vertex cache,
+ * edge table: all of it lives in the work buffer) must keep their pattern. */
+#define WORK_GUARD 64u
+
+static uint8_t work_pattern(size_t i)
+{
+    return (uint8_t)(0x3Cu ^ (i * 29u));
+}
+
+static void work_guard_fill(size_t bytes)
+{
+    uint8_t *w = (uint8_t *)work;
+    size_t i;
+    for (i = 0; i < WORK_GUARD; i++) {
+        w[i] = work_pattern(i);
+        w[WORK_GUARD + bytes + i] = work_pattern(WORK_GUARD + bytes + i);
+    }
+}
+
+static unsigned work_guard_damage(size_t bytes)
+{
+    const uint8_t *w = (const uint8_t *)work;
+    unsigned bad = 0;
+    size_t i;
+    for (i = 0; i < WORK_GUARD; i++) {
+        bad += w[i] != work_pattern(i);
+        bad += w[WORK_GUARD + bytes + i] != work_pattern(WORK_GUARD + bytes + i);
+    }
+    return bad;
+}
+
 static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t bgz)
 {
     zl_frame_config cfg;
     zl_frame f;
     compare_ctx cc;
     int i;
+    size_t bytes;
     config_for(&cfg, fmt, band);
-    TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, bgz));
+    bytes = zl_frame_bytes(&cfg);
+    TEST_ASSERT_TRUE(bytes > 0 && bytes + 2 * WORK_GUARD <= sizeof work);
+    work_guard_fill(bytes);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, (uint8_t *)work + WORK_GUARD, bytes, bg, bgz));
     for (i = 0; i < NMESH; i++) {
         const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
         if (scene[i].is_lines == 2)
@@ -281,6 +317,7 @@ static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t
     TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, compare_band, &cc));
     TEST_ASSERT_EQUAL_INT(H, cc.rows_seen);
     TEST_ASSERT_EQUAL_INT(0, cc.mismatches);
+    TEST_ASSERT_EQUAL_UINT_MESSAGE(0, work_guard_damage(bytes), "bytes around the work buffer written");
 }
 
 static void test_random_scenes_identical_in_every_band_height(void)
