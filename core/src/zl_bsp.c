@@ -189,7 +189,6 @@ zl_status zl_bsp_draw(const zl_bsp *bsp, const zl_mat4 *mvp, zl_vec3 eye, const 
             return ZL_ERR_ARG;
         if (mask_bytes < need)
             return ZL_ERR_SIZE;
-        memset(mask, 0, need);
         c.words = ((size_t)target->width + 31u) / 32u;
         c.bits = mask;
         c.count = (uint16_t *)(void *)(c.bits + (size_t)target->height * c.words);
@@ -211,6 +210,10 @@ zl_status zl_bsp_draw(const zl_bsp *bsp, const zl_mat4 *mvp, zl_vec3 eye, const 
             node = near_child(&bsp->nodes[stack[--sp]], eye, ftb);
         }
     }
+    /* Only now, with the tree known good, is anything written: the mask
+     * too (a failing call leaves every buffer as it was; fuzz_bsp). */
+    if (ftb)
+        memset(mask, 0, zl_bsp_mask_bytes(target->width, target->height));
     zl_vis_clear_target(target, clear);
     src.mesh = &mesh;
     src.mvp = mvp;
