@@ -32,6 +32,17 @@ static const char vis_usage_text[] =
     "                       reference); all but zbuffer draw flat colours and take\n"
     "                       no --depth, --shade depth/vertex, --pixel-space, --mode\n";
 
+/* Help of the issue #5 features, printed after usage_text too. */
+static const char features_usage_text[] =
+    "\nLines, points, toon, outlines (docs/FEATURES.md; with the z-buffer only)\n"
+    "  --wireframe          draw the triangles' edges (polygon mode line for\n"
+    "                       front and back faces), depth-tested, by the line rule\n"
+    "  --points             draw the triangles' vertices (polygon mode point)\n"
+    "  --toon N             toon shading: the light quantised to N bands (1..16)\n"
+    "  --outline            silhouette and crease (> 60 degrees) edges in black\n"
+    "                       over the model, with a small depth offset\n"
+    "  --aa-lines           antialiased lines for --wireframe and --outline\n";
+
 static const char usage_text[] =
     "Usage: zline-render [options] model.obj out.ppm\n"
     "\n"
@@ -126,6 +137,11 @@ typedef struct {
     int visibility;     /* 0: z-buffer, else a zl_visibility.h method (VIS_*) */
     zl_format format;
     int stats;
+    /* issue #5 features */
+    int wireframe, points, toon, outline, aa_lines;
+    zl_rgb toon_table[16];
+    zl_mesh_edge *edges; /* --outline: the model's edge list */
+    uint32_t edge_count;
 } options;
 
 /* ------------------------------------------------------------------ errors */
@@ -320,6 +336,7 @@ static int parse_options(int argc, char **argv, options *o)
         if (FLAG("--help") || FLAG("-h")) {
             fputs(usage_text, stdout);
             fputs(vis_usage_text, stdout);
+            fputs(features_usage_text, stdout);
             return -1;
         } else if (FLAG("--size")) {
             unsigned long w, h;
@@ -458,6 +475,24 @@ static int parse_options(int argc, char **argv, options *o)
             } else {
                 return usage_error("--mode: expected frame, scanline or band=N, got '%s'", val);
             }
+        } else if (FLAG("--wireframe")) {
+            NO_VALUE;
+            o->wireframe = 1;
+        } else if (FLAG("--points")) {
+            NO_VALUE;
+            o->points = 1;
+        } else if (FLAG("--outline")) {
+            NO_VALUE;
+            o->outline = 1;
+        } else if (FLAG("--aa-lines")) {
+            NO_VALUE;
+            o->aa_lines = 1;
+        } else if (FLAG("--toon")) {
+            unsigned long n;
+            NEEDS_VALUE;
+            if (!parse_uint(val, 16, &n) || n < 1)
+                return usage_error("--toon: expected a number of bands 1..16, got '%s'", val);
+            o->toon = (int)n;
         } else if (FLAG("--visibility")) {
             static const char *const vis_names[] = {"zbuffer", "aet", "painter", "bsp", "raycast"};
             int k;
@@ -705,6 +740,46 @@ static int band_out(void *user, const zl_band *band)
 
 /* ----------------------------------------------------------------- render */
 
+/* The style of the options (polygon modes, toon, antialiased lines). */
+static void style_of(const options *o, zl_style *sty)
+{
+    zl_style_default(sty);
+    if (o->wireframe) {
+        sty->polygon_front = ZL_POLY_LINE;
+        sty->polygon_back = ZL_POLY_LINE;
+    } else if (o->points) {
+        sty->polygon_front = ZL_POLY_POINT;
+        sty->polygon_back = ZL_POLY_POINT;
+    }
+    if (o->toon > 0) {
+        sty->toon_bands = (uint8_t)o->toon;
+        sty->toon_colors = o->toon_table;
+    }
+    sty->line_aa = (uint8_t)o->aa_lines;
+}
+
+static int styled(const options *o)
+{
+    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines;
+}
+
+/* Outline: silhouettes and creases over 60 degrees, black, drawn with LEQUAL
+ * and pulled towards the eye by 64 depth steps. */
+static void outline_of(const options *o, zl_outline *ol, zl_state *st, zl_style *sty)
+{
+    memset(ol, 0, sizeof *ol);
+    ol->edges = o->edges;
+    ol->edge_count = o->edge_count;
+    ol->silhouettes = 1;
+    ol->creases = 1;
+    ol->crease_cos = ZL_FX_ONE / 2;
+    st->depth_func = ZL_LEQUAL;
+    st->light_on = 0;
+    sty->polygon_front = ZL_POLY_FILL;
+    sty->polygon_back = ZL_POLY_FILL;
+    sty->offset_units = -ZL_FX_INT(64);
+}
+
 static int render_frame(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
                         const zl_state *state, output *out)
 {
@@ -734,8 +809,15 @@ static int render_frame(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
         ctx.state = *state;
         st = zl_clear(&ctx, o->bg, (uint16_t)CLEAR_DEPTH);
     }
-    if (st == ZL_OK)
+    if (st == ZL_OK) {
+        style_of(o, &ctx.style);
         st = zl_draw_mesh(&ctx, mesh, mvp);
+    }
+    if (st == ZL_OK && o->outline) {
+        zl_outline ol;
+        outline_of(o, &ol, &ctx.state, &ctx.style);
+        st = zl_draw_outlines(&ctx, mesh, mvp, &ol);
+    }
     if (st != ZL_OK) {
         error("render failed: %s", status_name(st));
         goto done;
@@ -764,6 +846,13 @@ static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *
     cfg->max_vertices = mesh->vertex_count;
     cfg->max_triangles = triangles;
     cfg->max_active = active;
+    if (styled(o)) {
+        /* line and point pieces: 3 a triangle; outline edges: 1 each */
+        cfg->styled = 1;
+        cfg->max_meshes = 2;
+        cfg->max_triangles = triangles + o->edge_count;
+        cfg->max_active = active * 3u + o->edge_count;
+    }
 }
 
 static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
@@ -789,8 +878,17 @@ static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
         return 0;
     }
     st = zl_frame_begin(&frame, &cfg, work, bytes, o->bg, (uint16_t)CLEAR_DEPTH);
-    if (st == ZL_OK)
-        st = zl_frame_add_mesh(&frame, mesh, mvp, state);
+    if (st == ZL_OK) {
+        zl_style sty;
+        style_of(o, &sty);
+        st = zl_frame_add_mesh_styled(&frame, mesh, mvp, state, &sty);
+        if (st == ZL_OK && o->outline) {
+            zl_outline ol;
+            zl_state ost = *state;
+            outline_of(o, &ol, &ost, &sty);
+            st = zl_frame_add_outlines(&frame, mesh, mvp, &ost, &sty, &ol);
+        }
+    }
     if (st != ZL_OK) {
         error("zl_frame setup failed: %s", status_name(st));
         free(work);
@@ -1029,6 +1127,28 @@ int main(int argc, char **argv)
         error("internal: invalid render state");
         goto done;
     }
+    if (o.visibility != 0 && styled(&o)) {
+        error("--wireframe, --points, --toon, --outline and --aa-lines need the z-buffer (no --visibility)");
+        goto done;
+    }
+    if (o.toon > 0) {
+        /* band k of N: the model colour at (k + 1) / N, the darkest at 1/(2N) */
+        int k;
+        for (k = 0; k < o.toon; k++) {
+            unsigned f = (unsigned)(k == 0 ? 128 / o.toon : 256 * (k + 1) / o.toon);
+            o.toon_table[k].r = (uint8_t)(o.color.r * (f > 255 ? 255 : f) / 255);
+            o.toon_table[k].g = (uint8_t)(o.color.g * (f > 255 ? 255 : f) / 255);
+            o.toon_table[k].b = (uint8_t)(o.color.b * (f > 255 ? 255 : f) / 255);
+        }
+    }
+    if (o.outline) {
+        o.edges = (zl_mesh_edge *)malloc((size_t)mesh.triangle_count * 3 * sizeof(zl_mesh_edge) + 1);
+        if (o.edges == NULL) {
+            error("out of memory");
+            goto done;
+        }
+        o.edge_count = zl_mesh_edges(&mesh, o.edges, (uint32_t)mesh.triangle_count * 3u);
+    }
 
     if (o.shade == SHADE_DEPTH) {
         depth_range(&out, &obj, mvp_ptr, &o);
@@ -1089,6 +1209,7 @@ done:
     zl_pnm_abort(&out.depth);
     free(out.grey_row);
     free(colors);
+    free(o.edges);
     zl_obj_free(&obj);
     return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
