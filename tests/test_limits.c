@@ -17,13 +17,14 @@
  *     holds; half a subpixel snaps to nothing;
  *   - light_dir at and beyond +-1.0;
  *   - too-small strides, odd strides and addresses, work buffers one byte
- *     short or misaligned, unknown vertices: the error, and every guard and
- *     payload byte unchanged.
+ *     short or misaligned, unknown vertices, a cyclic BSP tree: the error,
+ *     and every guard and payload byte unchanged.
  * Guards and row padding of every buffer are checked after every call.
  */
 #include <string.h>
 
 #include "unity.h"
+#include "zline/zl_visibility.h"
 #include "zline/zline.h"
 #include "zt_guard.h"
 #include "zt_ref.h"
@@ -631,6 +632,76 @@ static void test_work_buffer_short_or_misaligned_writes_nothing(void)
     TEST_ASSERT_EQUAL_UINT(0, zt_guard_check());
 }
 
+/* The fuzz_bsp finding: a cyclic tree drawn front to back is refused
+ * (ZL_ERR_CAPACITY), and the mask, colour and ids stay as they were (the
+ * mask used to be cleared before the tree was walked). */
+static void test_bsp_malformed_tree_writes_nothing(void)
+{
+    static const zl_fixed pos[] = {0, 0, 0, PX(4), 0, 0, 0, PX(4), 0};
+    static const uint16_t idx[] = {0, 1, 2}, src[] = {0};
+    zl_bsp_node nodes[2];
+    zl_bsp bsp;
+    zl_vis_target t;
+    zl_state st;
+    zl_mat4 m;
+    zl_vec3 eye = {0, 0, PX(3)};
+    size_t mask_bytes = zl_bsp_mask_bytes(12, 8), i;
+    uint8_t *mask, *color;
+    uint16_t *ids;
+    zt_guard_reset();
+    mask = (uint8_t *)zt_guard_alloc(mask_bytes);
+    color = (uint8_t *)zt_guard_alloc(12 * 8 * 2);
+    ids = (uint16_t *)zt_guard_alloc(12 * 8 * 2);
+    TEST_ASSERT_TRUE(mask != NULL && color != NULL && ids != NULL);
+    memset(mask, 0x77, mask_bytes);
+    memset(color, 0x55, 12 * 8 * 2);
+    memset(ids, 0x33, 12 * 8 * 2);
+    memset(nodes, 0, sizeof nodes);
+    nodes[0].n[2] = ZL_FX_ONE;
+    nodes[0].count = 1;
+    nodes[0].front = 1;
+    nodes[0].back = ZL_BSP_LEAF;
+    nodes[1].n[2] = ZL_FX_ONE;
+    nodes[1].front = 0; /* back to the root: a cycle */
+    nodes[1].back = ZL_BSP_LEAF;
+    memset(&bsp, 0, sizeof bsp);
+    bsp.positions = pos;
+    bsp.indices = idx;
+    bsp.source = src;
+    bsp.nodes = nodes;
+    bsp.vertex_count = 3;
+    bsp.triangle_count = 1;
+    bsp.node_count = 2;
+    bsp.root = 0;
+    bsp.depth = 2;
+    memset(&t, 0, sizeof t);
+    t.color = color;
+    t.color_stride = 24;
+    t.ids = ids;
+    t.ids_stride = 24;
+    t.width = 12;
+    t.height = 8;
+    t.format = ZL_FORMAT_RGB565;
+    zl_state_default(&st);
+    zl_mat4_identity(&m);
+    m.m[10] = ZL_FX_ONE / 2;
+    m.m[11] = ZL_FX_ONE / 2;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_bsp_draw(&bsp, &m, eye, &st, &t, (zl_rgb){1, 2, 3},
+                                                       ZL_BSP_FRONT_TO_BACK, mask, mask_bytes));
+    for (i = 0; i < mask_bytes; i++)
+        TEST_ASSERT_EQUAL_HEX8(0x77, mask[i]);
+    for (i = 0; i < 12 * 8 * 2; i++) {
+        TEST_ASSERT_EQUAL_HEX8(0x55, color[i]);
+        TEST_ASSERT_EQUAL_HEX8(0x33, ((uint8_t *)ids)[i]);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, zt_guard_check());
+    /* the same tree without the cycle draws */
+    nodes[1].front = ZL_BSP_LEAF;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_bsp_draw(&bsp, &m, eye, &st, &t, (zl_rgb){1, 2, 3}, ZL_BSP_FRONT_TO_BACK,
+                                             mask, mask_bytes));
+    TEST_ASSERT_EQUAL_UINT(0, zt_guard_check());
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -646,5 +717,6 @@ int main(void)
     RUN_TEST(test_too_small_strides_write_nothing);
     RUN_TEST(test_bad_mesh_writes_nothing);
     RUN_TEST(test_work_buffer_short_or_misaligned_writes_nothing);
+    RUN_TEST(test_bsp_malformed_tree_writes_nothing);
     return UNITY_END();
 }
