@@ -247,10 +247,19 @@ static int64_t max_abs(const int64_t *v, unsigned n)
 /* Number of right shifts that bring big below 2^bits. */
 static unsigned shift_below(int64_t big, unsigned bits)
 {
-    unsigned shift = 0;
-    while ((big >> shift) >= ((int64_t)1 << bits))
-        shift++;
-    return shift;
+    unsigned len = 0;
+    uint64_t v = (uint64_t)big;
+    if (big < ((int64_t)1 << bits))
+        return 0;
+#if defined(__GNUC__)
+    len = 64u - (unsigned)__builtin_clzll(v); /* CLZ: one instruction per word */
+#else
+    while (v != 0) {
+        v >>= 1;
+        len++;
+    }
+#endif
+    return len - bits;
 }
 
 static int32_t light_q14(zl_fixed c)

@@ -106,7 +106,15 @@ static int64_t clamp64(int64_t v, int64_t lo, int64_t hi)
  * intermediate exceeds 64 bits; saturates at +-limit. */
 static int64_t muldiv_pow2(int64_t s, unsigned sh, int64_t c, int64_t limit)
 {
-    int64_t q = s / c, r = s % c;
+    int64_t q, r;
+    if (s >= INT32_MIN && s <= INT32_MAX && c <= INT32_MAX) {
+        /* 32-bit division when it fits: same truncated quotient, far cheaper on Cortex-M */
+        q = (int32_t)s / (int32_t)c;
+        r = (int32_t)s % (int32_t)c;
+    } else {
+        q = s / c;
+        r = s % c;
+    }
     if (q > (limit >> sh) || q < -(limit >> sh))
         return q > 0 ? limit : -limit;
     return clamp64(q * ((int64_t)1 << sh) + zl_round_div64(r * ((int64_t)1 << sh), c), -limit, limit);

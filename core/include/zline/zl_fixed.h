@@ -71,7 +71,18 @@ static inline int64_t zl_floor_shift64(int64_t n, unsigned shift)
 /* floor(n / d) for d > 0. */
 static inline int64_t zl_floor_div64(int64_t n, int64_t d)
 {
-    int64_t q = n / d;
+    int64_t q;
+    /* Most operands fit 32 bits: a 32-bit division is one instruction on
+     * Cortex-M3/M4 where the 64-bit one is a ~60-instruction libgcc call.
+     * Same quotient either way. */
+    if (n >= INT32_MIN && n <= INT32_MAX && d <= INT32_MAX) {
+        int32_t n32 = (int32_t)n, d32 = (int32_t)d;
+        int32_t q32 = n32 / d32;
+        if (n32 % d32 < 0)
+            q32 -= 1;
+        return q32;
+    }
+    q = n / d;
     if ((n % d) < 0)
         q -= 1;
     return q;
