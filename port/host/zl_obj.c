@@ -45,6 +45,7 @@ typedef struct {
     char *msg;
     size_t msg_size;
     int normalize;
+    int texcoords; /* keep vt and split vertices by them */
     char decimal_point;
     unsigned long line;
 
@@ -61,6 +62,11 @@ typedef struct {
 
     uint32_t *poly; /* face vertex indices, 0-based, all faces one after another */
     size_t poly_count, poly_cap;
+    uint32_t *poly_vt; /* per face vertex: its vt index, or NO_VT */
+    size_t poly_vt_cap;
+    double *vt;     /* 2 per texture coordinate (u, v; v = 0 when absent) */
+    size_t vt_cap;
+    size_t corners_with_vt;
     face_rec *faces;
     size_t face_count, face_cap;
     size_t tri_total;
@@ -436,18 +442,28 @@ static zl_obj_status parse_vertex(parser *p, const char *cur, const char *end)
     return ZL_OBJ_OK;
 }
 
-/* vt (1 to 3 numbers) and vn (3 numbers): checked, counted, not kept. */
+#define NO_VT 0xFFFFFFFFu
+
+/* vt (1 to 3 numbers: u and v kept) and vn (3 numbers: checked, counted). */
 static zl_obj_status parse_attribute(parser *p, const char *cur, const char *end, int normal)
 {
     token t;
     size_t k = 0;
     zl_obj_status st;
+    double uv[2] = {0.0, 0.0};
     while (next_token(&cur, end, &t)) {
         double v;
         st = parse_number(p, t, &v);
         if (st != ZL_OBJ_OK)
             return st;
+        if (k < 2)
+            uv[k] = v;
         k++;
+    }
+    if (!normal && k >= 1 && k <= 3) {
+        GROW(p->vt, p->vt_cap, (p->vt_seen + 1) * 2);
+        p->vt[p->vt_seen * 2] = uv[0];
+        p->vt[p->vt_seen * 2 + 1] = uv[1];
     }
     if (normal && k != 3)
         return fail(p, ZL_OBJ_ERR_PARSE, "a normal (vn) has 3 numbers; this one has %lu",
@@ -505,7 +521,7 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
     while (next_token(&cur, end, &t)) {
         const char *part[3];
         size_t plen[3], parts = 1, i;
-        size_t idx = 0;
+        size_t idx = 0, vt_idx = NO_VT;
         part[0] = t.s;
         plen[0] = 0;
         for (i = 0; i < t.n; i++) {
@@ -532,11 +548,11 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
         if (st != ZL_OBJ_OK)
             return st;
         if (parts >= 2 && plen[1] > 0) {
-            size_t unused;
             st = resolve_index(p, t, part[1], plen[1], p->vt_seen, p->vt_total,
-                               "texture coordinate", "texture coordinates", &unused);
+                               "texture coordinate", "texture coordinates", &vt_idx);
             if (st != ZL_OBJ_OK)
                 return st;
+            p->corners_with_vt++;
         }
         if (parts == 3) {
             size_t unused;
@@ -546,6 +562,8 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
                 return st;
         }
         GROW(p->poly, p->poly_cap, p->poly_count + 1);
+        GROW(p->poly_vt, p->poly_vt_cap, p->poly_count + 1);
+        p->poly_vt[p->poly_count] = (uint32_t)vt_idx;
         p->poly[p->poly_count++] = (uint32_t)idx;
         n++;
     }
@@ -914,6 +932,8 @@ static void parser_free(parser *p)
     free(p->pos);
     free(p->col);
     free(p->poly);
+    free(p->poly_vt);
+    free(p->vt);
     free(p->faces);
 }
 
@@ -994,6 +1014,112 @@ static void ear_work_free(ear_work *w)
     free(w->keys);
 }
 
+/* Q16.16 of a texture coordinate, saturated. */
+static zl_fixed tex_fixed(double c)
+{
+    double r = floor(c * 65536.0 + 0.5);
+    return (zl_fixed)(r > 2147483647.0 ? 2147483647.0 : (r < -2147483648.0 ? -2147483648.0 : r));
+}
+
+/*
+ * Texture coordinates per vertex: a position used with different vt (a
+ * seam) becomes one vertex per (position, vt) pair, with the position (and
+ * colour) copied. The triangles' corners are found back in their face by
+ * position (the first corner with that position, for a face that repeats
+ * one). Corners without vt get (0, 0). t = 1 - v: OBJ's v points up, a
+ * texture's rows go down.
+ */
+static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
+{
+    size_t nv = p->v_count, tri = 0, i, k, count = 0;
+    size_t corners = p->tri_total * 3;
+    long *head = (long *)malloc(nv * sizeof(long) + 1);
+    long *next = (long *)malloc(corners * sizeof(long) + 1);
+    uint32_t *key_vt = (uint32_t *)malloc(corners * sizeof(uint32_t) + 1);
+    uint32_t *src = (uint32_t *)malloc(corners * sizeof(uint32_t) + 1); /* new vertex -> position */
+    zl_fixed *pos, *uv;
+    uint8_t *col = NULL;
+    if (head == NULL || next == NULL || key_vt == NULL || src == NULL) {
+        free(head);
+        free(next);
+        free(key_vt);
+        free(src);
+        return out_of_memory(p);
+    }
+    for (i = 0; i < nv; i++)
+        head[i] = -1;
+    for (i = 0; i < p->face_count; i++) {
+        const face_rec *f = &p->faces[i];
+        size_t t;
+        for (t = 0; t < f->count - 2; t++, tri++)
+            for (k = 0; k < 3; k++) {
+                uint16_t *ix = &obj->indices[tri * 3 + k];
+                uint32_t vt = NO_VT;
+                size_t c;
+                long e;
+                for (c = 0; c < f->count; c++)
+                    if (p->poly[f->first + c] == *ix) {
+                        vt = p->poly_vt[f->first + c];
+                        break;
+                    }
+                for (e = head[*ix]; e >= 0 && key_vt[e] != vt; e = next[e])
+                    ;
+                if (e < 0) {
+                    if (count >= ZL_OBJ_MAX_VERTICES) {
+                        free(head);
+                        free(next);
+                        free(key_vt);
+                        free(src);
+                        return fail(p, ZL_OBJ_ERR_LIMIT,
+                                    "more than %u vertices once vertices with several texture "
+                                    "coordinates are split",
+                                    ZL_OBJ_MAX_VERTICES);
+                    }
+                    e = (long)count++;
+                    key_vt[e] = vt;
+                    src[e] = *ix;
+                    next[e] = head[*ix];
+                    head[*ix] = e;
+                }
+                *ix = (uint16_t)e;
+            }
+    }
+    pos = (zl_fixed *)malloc(count * 3 * sizeof(zl_fixed) + 1);
+    uv = (zl_fixed *)malloc(count * 2 * sizeof(zl_fixed) + 1);
+    if (obj->vertex_colors != NULL)
+        col = (uint8_t *)malloc(count * 3 + 1);
+    if (pos == NULL || uv == NULL || (obj->vertex_colors != NULL && col == NULL)) {
+        free(pos);
+        free(uv);
+        free(col);
+        free(head);
+        free(next);
+        free(key_vt);
+        free(src);
+        return out_of_memory(p);
+    }
+    for (i = 0; i < count; i++) {
+        for (k = 0; k < 3; k++) {
+            pos[i * 3 + k] = obj->positions[src[i] * 3 + k];
+            if (col != NULL)
+                col[i * 3 + k] = obj->vertex_colors[src[i] * 3 + k];
+        }
+        uv[i * 2] = key_vt[i] == NO_VT ? 0 : tex_fixed(p->vt[key_vt[i] * 2]);
+        uv[i * 2 + 1] = key_vt[i] == NO_VT ? 0 : tex_fixed(1.0 - p->vt[key_vt[i] * 2 + 1]);
+    }
+    free(obj->positions);
+    free(obj->vertex_colors);
+    obj->positions = pos;
+    obj->vertex_colors = col;
+    obj->texcoords = uv;
+    obj->vertex_count = (uint32_t)count;
+    free(head);
+    free(next);
+    free(key_vt);
+    free(src);
+    return ZL_OBJ_OK;
+}
+
 /* Move the parsed data into *obj: normalise, convert, triangulate. */
 static zl_obj_status build(parser *p, zl_obj *obj)
 {
@@ -1070,13 +1196,18 @@ static zl_obj_status build(parser *p, zl_obj *obj)
         p->col = NULL; /* handed over */
     }
     obj->vertex_count = (uint32_t)p->v_count;
+    if (p->texcoords && p->corners_with_vt > 0) {
+        zl_obj_status st = split_by_vt(p, obj);
+        if (st != ZL_OBJ_OK)
+            return st;
+    }
     obj->triangle_count = (uint32_t)p->tri_total;
     obj->face_count = (uint32_t)p->face_count;
     return ZL_OBJ_OK;
 }
 
-zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const char *name,
-                              const zl_obj_options *opt, char *msg, size_t msg_size)
+static zl_obj_status load_mem(zl_obj *obj, const char *data, size_t size, const char *name,
+                              const zl_obj_options *opt, int texcoords, char *msg, size_t msg_size)
 {
     parser p;
     zl_obj_status st;
@@ -1092,6 +1223,7 @@ zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const 
     p.msg = msg;
     p.msg_size = msg_size;
     p.normalize = opt != NULL ? opt->normalize : 0;
+    p.texcoords = texcoords;
     {
         const struct lconv *lc = localeconv();
         p.decimal_point = (lc != NULL && lc->decimal_point != NULL &&
@@ -1108,8 +1240,20 @@ zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const 
     return st;
 }
 
-zl_obj_status zl_obj_load_file(zl_obj *obj, const char *path, const zl_obj_options *opt, char *msg,
-                               size_t msg_size)
+zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const char *name,
+                              const zl_obj_options *opt, char *msg, size_t msg_size)
+{
+    return load_mem(obj, data, size, name, opt, 0, msg, msg_size);
+}
+
+zl_obj_status zl_obj_load_mem_tex(zl_obj *obj, const char *data, size_t size, const char *name,
+                                  const zl_obj_options *opt, char *msg, size_t msg_size)
+{
+    return load_mem(obj, data, size, name, opt, 1, msg, msg_size);
+}
+
+static zl_obj_status load_file(zl_obj *obj, const char *path, const zl_obj_options *opt, int texcoords,
+                               char *msg, size_t msg_size)
 {
     FILE *f;
     char *buf = NULL;
@@ -1149,9 +1293,21 @@ zl_obj_status zl_obj_load_file(zl_obj *obj, const char *path, const zl_obj_optio
         return ZL_OBJ_ERR_IO;
     }
     fclose(f);
-    st = zl_obj_load_mem(obj, buf, size, path, opt, msg, msg_size);
+    st = load_mem(obj, buf, size, path, opt, texcoords, msg, msg_size);
     free(buf);
     return st;
+}
+
+zl_obj_status zl_obj_load_file(zl_obj *obj, const char *path, const zl_obj_options *opt, char *msg,
+                               size_t msg_size)
+{
+    return load_file(obj, path, opt, 0, msg, msg_size);
+}
+
+zl_obj_status zl_obj_load_file_tex(zl_obj *obj, const char *path, const zl_obj_options *opt, char *msg,
+                                   size_t msg_size)
+{
+    return load_file(obj, path, opt, 1, msg, msg_size);
 }
 
 void zl_obj_free(zl_obj *obj)
@@ -1161,6 +1317,7 @@ void zl_obj_free(zl_obj *obj)
     free(obj->positions);
     free(obj->indices);
     free(obj->vertex_colors);
+    free(obj->texcoords);
     memset(obj, 0, sizeof *obj);
 }
 

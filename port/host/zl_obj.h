@@ -11,8 +11,13 @@
  *                        v/vt, v//vn or v/vt/vn; negative indices count back
  *                        from the last vertex defined before the line;
  *                        positive ones may refer to vertices defined later
- *   vt, vn               validated (1..3 and 3 finite numbers) and counted,
- *                        so that face references to them can be checked
+ *   vt u [v [w]]         a texture coordinate; with the *_tex loaders kept
+ *                        when faces refer to it: the model then gets
+ *                        texcoords (s = u, t = 1 - v,
+ *                        Q16.16, 2 per vertex), and a vertex used with
+ *                        different vt is split into one vertex per pair
+ *   vn                   validated (3 finite numbers) and counted, so that
+ *                        face references to it can be checked
  *   g o s usemtl mtllib l p and the free-form geometry statements
  *                        ignored
  *   # ...                a comment, at the start of a line or after data
@@ -80,6 +85,7 @@ typedef struct {
     zl_fixed *positions;     /* 3 per vertex, Q16.16 */
     uint16_t *indices;       /* 3 per triangle */
     uint8_t *vertex_colors;  /* 3 per vertex (r, g, b), or NULL */
+    zl_fixed *texcoords;     /* 2 per vertex (s, t), Q16.16, or NULL when no face uses vt */
     uint32_t vertex_count;   /* <= ZL_OBJ_MAX_VERTICES */
     uint32_t triangle_count; /* <= ZL_OBJ_MAX_TRIANGLES */
     uint32_t face_count;     /* f lines */
@@ -108,6 +114,15 @@ zl_obj_status zl_obj_load_file(zl_obj *obj, const char *path, const zl_obj_optio
  * name stands for the file name in messages. */
 zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const char *name,
                               const zl_obj_options *opt, char *msg, size_t msg_size);
+
+/* The same two loaders keeping texture coordinates: texcoords gets 2 per
+ * vertex when faces use vt, and a vertex used with different vt is split into
+ * one vertex per (position, vt) pair (positions and colours copied; corners
+ * without vt get (0, 0)). The plain loaders never split vertices. */
+zl_obj_status zl_obj_load_file_tex(zl_obj *obj, const char *path, const zl_obj_options *opt, char *msg,
+                                   size_t msg_size);
+zl_obj_status zl_obj_load_mem_tex(zl_obj *obj, const char *data, size_t size, const char *name,
+                                  const zl_obj_options *opt, char *msg, size_t msg_size);
 
 /* Release the arrays and empty *obj. Safe on an empty or failed zl_obj. */
 void zl_obj_free(zl_obj *obj);

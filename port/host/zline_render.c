@@ -41,7 +41,11 @@ static const char features_usage_text[] =
     "  --toon N             toon shading: the light quantised to N bands (1..16)\n"
     "  --outline            silhouette and crease (> 60 degrees) edges in black\n"
     "                       over the model, with a small depth offset\n"
-    "  --aa-lines           antialiased lines for --wireframe and --outline\n";
+    "  --aa-lines           antialiased lines for --wireframe and --outline\n"
+    "  --texture file.ppm   texture the model with a P6 image (width and height\n"
+    "                       powers of two up to 4096) by its vt coordinates,\n"
+    "                       repeated, perspective-correct; lit with the light\n"
+    "  --affine             with --texture: affine (screen-linear) mapping\n";
 
 static const char usage_text[] =
     "Usage: zline-render [options] model.obj out.ppm\n"
@@ -142,6 +146,10 @@ typedef struct {
     zl_rgb toon_table[16];
     zl_mesh_edge *edges; /* --outline: the model's edge list */
     uint32_t edge_count;
+    const char *texture_path; /* --texture */
+    int affine;               /* --affine */
+    zl_texture texture;
+    const zl_fixed *texcoords;
 } options;
 
 /* ------------------------------------------------------------------ errors */
@@ -487,6 +495,12 @@ static int parse_options(int argc, char **argv, options *o)
         } else if (FLAG("--aa-lines")) {
             NO_VALUE;
             o->aa_lines = 1;
+        } else if (FLAG("--texture")) {
+            NEEDS_VALUE;
+            o->texture_path = val;
+        } else if (FLAG("--affine")) {
+            NO_VALUE;
+            o->affine = 1;
         } else if (FLAG("--toon")) {
             unsigned long n;
             NEEDS_VALUE;
@@ -756,11 +770,16 @@ static void style_of(const options *o, zl_style *sty)
         sty->toon_colors = o->toon_table;
     }
     sty->line_aa = (uint8_t)o->aa_lines;
+    if (o->texture_path != NULL) {
+        sty->texture = &o->texture;
+        sty->texcoords = o->texcoords;
+        sty->tex_mapping = (uint8_t)(o->affine ? ZL_TEX_AFFINE : ZL_TEX_PERSPECTIVE);
+    }
 }
 
 static int styled(const options *o)
 {
-    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines;
+    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines || o->texture_path != NULL;
 }
 
 /* Outline: silhouettes and creases over 60 degrees, black, drawn with LEQUAL
@@ -849,6 +868,7 @@ static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *
     if (styled(o)) {
         /* line and point pieces: 3 a triangle; outline edges: 1 each */
         cfg->styled = 1;
+        cfg->textured = o->texture_path != NULL;
         cfg->max_meshes = 2;
         cfg->max_triangles = triangles + o->edge_count;
         cfg->max_active = active * 3u + o->edge_count;
@@ -1046,6 +1066,50 @@ done:
 
 /* ------------------------------------------------------------------- main */
 
+/* --texture: the P6 image as RGB565 texels (*texels, to free). */
+static int load_texture(options *o, const zl_obj *obj, uint16_t **texels)
+{
+    zl_pnm_image img;
+    char msg[512];
+    uint32_t i;
+    if (obj->texcoords == NULL) {
+        error("--texture: %s has no texture coordinates (vt) on its faces", o->model);
+        return 0;
+    }
+    if (zl_pnm_read(&img, o->texture_path, msg, sizeof msg) != ZL_PNM_OK) {
+        error("%s", msg);
+        return 0;
+    }
+    if (img.channels != 3 || img.width < 1 || img.width > 4096 || img.height < 1 || img.height > 4096 ||
+        (img.width & (img.width - 1)) != 0 || (img.height & (img.height - 1)) != 0) {
+        error("--texture: %s must be a P6 image with power-of-two sides up to 4096 (it is %ux%u)",
+              o->texture_path, (unsigned)img.width, (unsigned)img.height);
+        zl_pnm_image_free(&img);
+        return 0;
+    }
+    *texels = (uint16_t *)malloc((size_t)img.width * img.height * sizeof(uint16_t));
+    if (*texels == NULL) {
+        error("out of memory");
+        zl_pnm_image_free(&img);
+        return 0;
+    }
+    for (i = 0; i < img.width * img.height; i++) {
+        unsigned c[3], k;
+        for (k = 0; k < 3; k++)
+            c[k] = (unsigned)((img.samples[i * 3 + k] * 255u + img.maxval / 2) / img.maxval);
+        (*texels)[i] = (uint16_t)(((c[0] >> 3) << 11) | ((c[1] >> 2) << 5) | (c[2] >> 3));
+    }
+    o->texture.texels = *texels;
+    o->texture.width = (uint16_t)img.width;
+    o->texture.height = (uint16_t)img.height;
+    o->texture.stride = (uint16_t)img.width;
+    o->texture.wrap_s = ZL_WRAP_REPEAT;
+    o->texture.wrap_t = ZL_WRAP_REPEAT;
+    o->texcoords = obj->texcoords;
+    zl_pnm_image_free(&img);
+    return 1;
+}
+
 static int normalize_light(const double *l, zl_vec3 *out)
 {
     double n = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
@@ -1067,6 +1131,7 @@ int main(int argc, char **argv)
     zl_state state;
     output out;
     uint8_t *colors = NULL;
+    uint16_t *texels = NULL;
     char msg[512];
     int r, ok = 0;
 
@@ -1078,7 +1143,8 @@ int main(int argc, char **argv)
 
     zl_obj_options_default(&lopt);
     lopt.normalize = o.normalize;
-    if (zl_obj_load_file(&obj, o.model, &lopt, msg, sizeof msg) != ZL_OBJ_OK) {
+    if ((o.texture_path != NULL ? zl_obj_load_file_tex(&obj, o.model, &lopt, msg, sizeof msg)
+                                : zl_obj_load_file(&obj, o.model, &lopt, msg, sizeof msg)) != ZL_OBJ_OK) {
         error("%s", msg);
         return EXIT_FAILURE;
     }
@@ -1128,9 +1194,12 @@ int main(int argc, char **argv)
         goto done;
     }
     if (o.visibility != 0 && styled(&o)) {
-        error("--wireframe, --points, --toon, --outline and --aa-lines need the z-buffer (no --visibility)");
+        error("--wireframe, --points, --toon, --outline, --aa-lines and --texture need the z-buffer (no "
+              "--visibility)");
         goto done;
     }
+    if (o.texture_path != NULL && !load_texture(&o, &obj, &texels))
+        goto done;
     if (o.toon > 0) {
         /* band k of N: the model colour at (k + 1) / N, the darkest at 1/(2N) */
         int k;
@@ -1210,6 +1279,7 @@ done:
     free(out.grey_row);
     free(colors);
     free(o.edges);
+    free(texels);
     zl_obj_free(&obj);
     return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,110 @@
+/*
+ * OBJ texture coordinates (zl_obj_load_mem_tex): kept per vertex as
+ * (s, t) = (u, 1 - v) in Q16.16, vertices split where a position is used
+ * with different vt (a seam), the plain loader unchanged.
+ */
+#include <string.h>
+
+#include "unity.h"
+#include "zl_obj.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static zl_obj obj;
+static char msg[256];
+
+static zl_fixed fx(double v)
+{
+    return (zl_fixed)(v * 65536.0 + (v < 0 ? -0.5 : 0.5));
+}
+
+static void test_quad_without_seams(void)
+{
+    static const char text[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                               "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                               "f 1/1 2/2 3/3 4/4\n";
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_mem_tex(&obj, text, sizeof text - 1, "q.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_UINT32(4, obj.vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(2, obj.triangle_count);
+    TEST_ASSERT_NOT_NULL(obj.texcoords);
+    {
+        uint32_t i;
+        for (i = 0; i < 4; i++) {
+            /* the vertex at position (x, y) has vt (x, y): s = x, t = 1 - y */
+            zl_fixed x = obj.positions[i * 3], y = obj.positions[i * 3 + 1];
+            TEST_ASSERT_EQUAL_INT32(x, obj.texcoords[i * 2]);
+            TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE - y, obj.texcoords[i * 2 + 1]);
+        }
+    }
+    zl_obj_free(&obj);
+    /* the plain loader keeps none */
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_mem(&obj, text, sizeof text - 1, "q.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_NULL(obj.texcoords);
+    TEST_ASSERT_EQUAL_UINT32(4, obj.vertex_count);
+    zl_obj_free(&obj);
+}
+
+static void test_seam_splits_vertices(void)
+{
+    /* two triangles sharing the edge 2-3, each with its own vt there */
+    static const char text[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                               "vt 0.25 0.5\nvt 0.75 0.5\nvt 0.5 1\nvt 0 0\nvt 1 0\n"
+                               "f 1/4 2/5 3/1\n"
+                               "f 1/2 3/3 4/5\n";
+    uint32_t t, k, seen = 0;
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_mem_tex(&obj, text, sizeof text - 1, "s.obj", NULL, msg, sizeof msg));
+    /* positions 1 and 3 are used with two vt each: 4 + 2 vertices */
+    TEST_ASSERT_EQUAL_UINT32(6, obj.vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(2, obj.triangle_count);
+    /* every corner carries its own face's vt */
+    for (t = 0; t < 2; t++)
+        for (k = 0; k < 3; k++) {
+            uint16_t i = obj.indices[t * 3 + k];
+            zl_fixed x = obj.positions[i * 3], y = obj.positions[i * 3 + 1];
+            zl_fixed s = obj.texcoords[i * 2], tt = obj.texcoords[i * 2 + 1];
+            if (t == 0 && x == 0 && y == 0) {
+                TEST_ASSERT_EQUAL_INT32(fx(0), s);
+                TEST_ASSERT_EQUAL_INT32(fx(1), tt);
+                seen++;
+            }
+            if (t == 1 && x == 0 && y == 0) {
+                TEST_ASSERT_EQUAL_INT32(fx(0.75), s);
+                TEST_ASSERT_EQUAL_INT32(fx(0.5), tt);
+                seen++;
+            }
+            if (t == 0 && x == ZL_FX_ONE && y == ZL_FX_ONE) {
+                TEST_ASSERT_EQUAL_INT32(fx(0.25), s);
+                seen++;
+            }
+            if (t == 1 && x == ZL_FX_ONE && y == ZL_FX_ONE) {
+                TEST_ASSERT_EQUAL_INT32(fx(0.5), s);
+                TEST_ASSERT_EQUAL_INT32(0, tt);
+                seen++;
+            }
+        }
+    TEST_ASSERT_EQUAL_UINT32(4, seen);
+    zl_obj_free(&obj);
+}
+
+static void test_corners_without_vt_get_zero(void)
+{
+    static const char text[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0.5 0.5\nf 1/1 2 3\n";
+    uint32_t i;
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_mem_tex(&obj, text, sizeof text - 1, "m.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
+    for (i = 0; i < 3; i++) {
+        int first = obj.positions[i * 3] == 0 && obj.positions[i * 3 + 1] == 0;
+        TEST_ASSERT_EQUAL_INT32(first ? fx(0.5) : 0, obj.texcoords[i * 2]);
+    }
+    zl_obj_free(&obj);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_quad_without_seams);
+    RUN_TEST(test_seam_splits_vertices);
+    RUN_TEST(test_corners_without_vt_get_zero);
+    return UNITY_END();
+}
