@@ -4,6 +4,7 @@
  * frame mode; tests/test_frame_modes.c checks the scanline modes give the
  * same bytes. References are written here from the rules in zline.h.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "unity.h"
@@ -271,6 +272,11 @@ static void test_decal(void)
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &floor_m, &mvp));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &decal_m, &mvp));
     shown = read_red(200, got);
+    {
+        char m[120];
+        snprintf(m, sizeof m, "decal without offset: %u of %u pixels show", shown, covered);
+        TEST_MESSAGE(m);
+    }
     TEST_ASSERT_GREATER_THAN(0, shown);
     TEST_ASSERT_LESS_THAN(covered, shown);
     /* with offset (-1, -1): every decal pixel */
