@@ -4,8 +4,9 @@
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
-#   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds
-#      under ASan + UBSan (tests/fuzz/run.sh); any finding fails
+#   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
+#      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
+#      fails. Five targets: about 4 minutes with the build.
 # Build trees go to build/ci-*. Exit status: non-zero if anything failed.
 set -eu
 cd "$(dirname "$0")/.."
