@@ -1,0 +1,203 @@
+/*
+ * Instructions per pixel of the issue #5 loops on Cortex-M (QEMU mps2,
+ * -icount shift=6, counted with TIMER0 exactly as bench.c does): frame mode,
+ * 320x240 RGB565 with a 16-bit depth buffer, depth LESS with writes, every
+ * fragment passing (each pixel is written once):
+ *   line          239 Bresenham segments of 320 pixels (x-major, one row step
+ *                 each), 76480 pixels
+ *   line_aa       the same segments antialiased (two blended pixels a column)
+ *   tex_affine    a screen-filling textured quad (2 triangles), affine
+ *   tex_persp     the same, perspective-correct, a reciprocal every pixel
+ *   tex_persp16   the same, exact every 16 pixels
+ *   flat          the same quad untextured, for comparison
+ * Each count is one whole zl_draw_* call (setup included) divided by the
+ * pixels written; the clear is not counted. Prints "FEATURE tag name
+ * instructions pixels per_pixel_x100".
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "zline/zline.h"
+
+#ifndef BENCH_TAG
+#define BENCH_TAG "features"
+#endif
+
+enum { W = 320, H = 240, TS = 64 };
+
+static uint16_t color_buf[W * H];
+static uint16_t depth_buf[W * H];
+static uint16_t texels[TS * TS];
+
+#define TIMER0_CTRL (*(volatile uint32_t *)0x40000000u)
+#define TIMER0_VALUE (*(volatile uint32_t *)0x40000004u)
+#define TIMER0_RELOAD (*(volatile uint32_t *)0x40000008u)
+
+static uint32_t stamps[8];
+static unsigned stamp_count;
+static uint32_t overhead;
+
+void mark(void);
+__attribute__((noinline)) void mark(void)
+{
+    uint32_t v = TIMER0_VALUE;
+    if (stamp_count < 8)
+        stamps[stamp_count] = v;
+    stamp_count++;
+}
+
+/* Instructions since the timer started (shift 6: ticks = 1.6 instructions). */
+static uint32_t stamp_insns(unsigned i)
+{
+    uint64_t k = 0xFFFFFFFFu - stamps[i];
+    return (uint32_t)((5u * k + 7u) / 8u);
+}
+
+static uint32_t between(unsigned i, unsigned j)
+{
+    return stamp_insns(j) - stamp_insns(i) - overhead;
+}
+
+static int timer_init(void)
+{
+    TIMER0_CTRL = 0;
+    TIMER0_RELOAD = 0xFFFFFFFFu;
+    TIMER0_VALUE = 0xFFFFFFFFu;
+    TIMER0_CTRL = 1;
+    stamp_count = 0;
+    mark();
+    mark();
+    overhead = 0;
+    overhead = between(0, 1);
+    stamp_count = 0;
+    mark();
+    __asm__ volatile(".rept 1000\n nop\n .endr");
+    mark();
+    if (between(0, 1) != 1000) {
+        printf("bench_features: 1000 nops counted as %lu (is QEMU running with -icount shift=6?)\n",
+               (unsigned long)between(0, 1));
+        return 1;
+    }
+    return 0;
+}
+
+static zl_context ctx;
+
+static void reset(void)
+{
+    zl_rgb bg = {0, 0, 0};
+    zl_state_default(&ctx.state);
+    zl_style_default(&ctx.style);
+    zl_clear(&ctx, bg, 65535);
+}
+
+static unsigned written(void)
+{
+    unsigned i, n = 0;
+    for (i = 0; i < W * H; i++)
+        n += depth_buf[i] != 65535;
+    return n;
+}
+
+static void report(const char *name, uint32_t insns, unsigned pixels)
+{
+    printf("FEATURE %s %s %lu %u %lu\n", BENCH_TAG, name, (unsigned long)insns, pixels,
+           pixels ? (unsigned long)((uint64_t)insns * 100u / pixels) : 0ul);
+}
+
+/* 239 segments from (0, k) to (319, k + 1), pixel centres, depth 0.5. */
+static zl_fixed line_pos[240 * 2 * 3];
+
+static int run_lines(int aa)
+{
+    zl_lines l;
+    zl_status st;
+    unsigned k;
+    for (k = 0; k < 239; k++) {
+        zl_fixed *p = &line_pos[k * 6];
+        p[0] = ZL_FX_HALF;
+        p[1] = (zl_fixed)(k * 65536u + 32768u);
+        p[2] = ZL_FX_HALF;
+        p[3] = (zl_fixed)(319 * 65536 + 32768);
+        p[4] = (zl_fixed)((k + 1) * 65536u + 32768u);
+        p[5] = ZL_FX_HALF;
+    }
+    memset(&l, 0, sizeof l);
+    l.positions = line_pos;
+    l.vertex_count = 239 * 2;
+    l.count = 239 * 2;
+    l.prim = ZL_PRIM_LINES;
+    reset();
+    ctx.style.line_aa = (uint8_t)aa;
+    stamp_count = 0;
+    mark();
+    st = zl_draw_lines(&ctx, &l, NULL);
+    mark();
+    if (st != ZL_OK)
+        return 1;
+    /* antialiased lines write no depth: count their columns instead */
+    report(aa ? "line_aa" : "line", between(0, 1), aa ? 239u * 320u : written());
+    return 0;
+}
+
+/* A screen-filling quad in pixel space, texture repeated 4 x 3 times. */
+static const zl_fixed quad_pos[] = {0, 0, ZL_FX_HALF, ZL_FX_INT(W), 0, ZL_FX_HALF,
+                                    ZL_FX_INT(W), ZL_FX_INT(H), ZL_FX_HALF, 0, ZL_FX_INT(H), ZL_FX_HALF};
+static const zl_fixed quad_uv[] = {0, 0, ZL_FX_INT(4), 0, ZL_FX_INT(4), ZL_FX_INT(3), 0, ZL_FX_INT(3)};
+static const uint16_t quad_idx[] = {0, 1, 2, 0, 2, 3};
+
+static int run_quad(const char *name, int textured, unsigned mapping, unsigned every)
+{
+    zl_mesh m = {quad_pos, quad_idx, NULL, NULL, 4, 2};
+    zl_texture tex;
+    zl_status st;
+    memset(&tex, 0, sizeof tex);
+    tex.texels = texels;
+    tex.width = TS;
+    tex.height = TS;
+    tex.stride = TS;
+    reset();
+    if (textured) {
+        ctx.style.texture = &tex;
+        ctx.style.texcoords = quad_uv;
+        ctx.style.tex_mapping = (uint8_t)mapping;
+        ctx.style.tex_every = (uint8_t)every;
+    }
+    stamp_count = 0;
+    mark();
+    st = zl_draw_mesh(&ctx, &m, NULL);
+    mark();
+    if (st != ZL_OK)
+        return 1;
+    report(name, between(0, 1), written());
+    return 0;
+}
+
+int main(void)
+{
+    zl_target tg;
+    int failed = 0;
+    unsigned i;
+    if (timer_init() != 0)
+        return 100;
+    for (i = 0; i < TS * TS; i++)
+        texels[i] = (uint16_t)((((i % TS) / 8 + (i / TS) / 8) & 1) ? 0xFFE0u : 0x001Fu);
+    memset(&tg, 0, sizeof tg);
+    tg.color = color_buf;
+    tg.color_stride = W * 2;
+    tg.depth = depth_buf;
+    tg.depth_stride = W * 2;
+    tg.width = W;
+    tg.height = H;
+    tg.format = ZL_FORMAT_RGB565;
+    if (zl_init(&ctx, &tg) != ZL_OK)
+        return 101;
+    printf("# %s: FEATURE tag name instructions pixels instructions_per_pixel_x100\n", BENCH_TAG);
+    failed += run_lines(0);
+    failed += run_lines(1);
+    failed += run_quad("flat", 0, 0, 0);
+    failed += run_quad("tex_affine", 1, ZL_TEX_AFFINE, 0);
+    failed += run_quad("tex_persp", 1, ZL_TEX_PERSPECTIVE, 0);
+    failed += run_quad("tex_persp16", 1, ZL_TEX_PERSPECTIVE, 16);
+    return failed;
+}
