@@ -452,7 +452,7 @@ static zl_obj_status parse_attribute(parser *p, const char *cur, const char *end
     zl_obj_status st;
     double uv[2] = {0.0, 0.0};
     while (next_token(&cur, end, &t)) {
-        double v;
+        double v = 0.0;
         st = parse_number(p, t, &v);
         if (st != ZL_OBJ_OK)
             return st;
@@ -1062,6 +1062,9 @@ static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
                         vt = p->poly_vt[f->first + c];
                         break;
                     }
+                /* *ix < nv (the parser checked every index), and head[0 .. nv)
+                 * is set above: the analyser's path has nv == 0 with a face */
+                /* NOLINTNEXTLINE(clang-analyzer-core.uninitialized.Assign) */
                 for (e = head[*ix]; e >= 0 && key_vt[e] != vt; e = next[e])
                     ;
                 if (e < 0) {
@@ -1129,7 +1132,9 @@ static zl_obj_status build(parser *p, zl_obj *obj)
 
     memset(&w, 0, sizeof w);
     obj->positions = (zl_fixed *)malloc(p->v_count * 3 * sizeof(zl_fixed) + 1);
-    obj->indices = (uint16_t *)malloc(p->tri_total * 3 * sizeof(uint16_t) + 1);
+    /* zeroed: every entry is written by triangulate(), and the analysers
+     * need not prove it */
+    obj->indices = (uint16_t *)calloc(p->tri_total * 3 + 1, sizeof(uint16_t));
     w.x = (double *)malloc(p->max_face * sizeof(double));
     w.y = (double *)malloc(p->max_face * sizeof(double));
     w.prev = (size_t *)malloc(p->max_face * sizeof(size_t));

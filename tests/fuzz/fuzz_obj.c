@@ -2,8 +2,9 @@
  * Fuzz target: the OBJ loader (port/host zl_obj_load_mem) on arbitrary
  * bytes, then the loaded mesh rendered by the core.
  *
- * The first byte picks the options (normalise or not) and the size of the
- * message buffer (0..63 bytes, guarded); the rest is the file. The text is
+ * The first byte picks the options (normalise or not), the loader (plain or
+ * keeping texture coordinates) and the size of the message buffer (0..62
+ * bytes, guarded); the rest is the file. The text is
  * copied into a buffer of exactly its size without a terminating NUL, so a
  * read past the end is an AddressSanitizer finding. Checked:
  *   - success: counts within the zl_mesh limits, every index < vertex_count,
@@ -71,15 +72,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     zl_obj_options_default(&opt);
     opt.normalize = sel & 1u;
-    msg_size = (sel >> 1) % 64;
+    msg_size = (sel >> 1) % 63;
     fz_buf_alloc(&msg, msg_size);
     text = (char *)malloc(size ? size : 1);
     if (text == NULL)
         abort();
     if (size > 0)
         memcpy(text, data, size);
-    st = zl_obj_load_mem(&obj, size ? text : NULL, size, "fuzz.obj", &opt, msg_size ? (char *)msg.data : NULL,
-                         msg_size);
+    /* bit 7 of the selector: the loader that keeps texture coordinates
+     * (vertices split at vt seams) */
+    if (sel & 128u)
+        st = zl_obj_load_mem_tex(&obj, size ? text : NULL, size, "fuzz.obj", &opt,
+                                 msg_size ? (char *)msg.data : NULL, msg_size);
+    else
+        st = zl_obj_load_mem(&obj, size ? text : NULL, size, "fuzz.obj", &opt, msg_size ? (char *)msg.data : NULL,
+                             msg_size);
     fz_buf_check(&msg, "message");
     if (msg_size > 0)
         FZ_REQUIRE(memchr(msg.data, '\0', msg_size) != NULL, "message not NUL-terminated in %zu bytes", msg_size);
@@ -92,12 +99,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (i = 0; i < (size_t)obj.triangle_count * 3; i++)
             FZ_REQUIRE(obj.indices[i] < obj.vertex_count, "index %u of %u vertices", obj.indices[i],
                        obj.vertex_count);
+        if (!(sel & 128u))
+            FZ_REQUIRE(obj.texcoords == NULL, "texture coordinates from the plain loader");
         draw_obj(&obj);
         zl_obj_free(&obj);
     } else {
         FZ_REQUIRE(st == ZL_OBJ_ERR_PARSE || st == ZL_OBJ_ERR_LIMIT || st == ZL_OBJ_ERR_MEMORY,
                    "status %d", (int)st);
-        FZ_REQUIRE(obj.positions == NULL && obj.indices == NULL && obj.vertex_colors == NULL &&
+        FZ_REQUIRE(obj.positions == NULL && obj.indices == NULL && obj.vertex_colors == NULL && obj.texcoords == NULL &&
                        obj.vertex_count == 0 && obj.triangle_count == 0,
                    "a failed load left data in *obj");
         if (msg_size > 10)
