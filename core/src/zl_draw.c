@@ -276,6 +276,8 @@ zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *m
         st = zl_style_check(&ctx->style);
     if (st == ZL_OK)
         st = zl_check_lines(lines);
+    if (st == ZL_OK) /* the transform limits (LIMITS in zline.h) */
+        st = zl_check_positions(lines->positions, lines->vertex_count, mvp);
     if (st != ZL_OK)
         return st;
     zl_lines_mesh(lines, &m);

@@ -213,6 +213,8 @@ zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *
     zl_mesh m;
     zl_status st = zl_check_lines(lines);
     zl_style d;
+    if (st == ZL_OK) /* the transform limits (LIMITS in zline.h) */
+        st = zl_check_positions(lines->positions, lines->vertex_count, mvp);
     if (st != ZL_OK)
         return st;
     if (style == NULL) {

@@ -273,6 +273,8 @@ zl_status zl_check_mesh(const zl_mesh *m, int pixel_space);
 /* ---- zl_matrix.c: zl_check_mesh, then the transform limits of zline.h
  * (LIMITS) when mvp is given; ZL_ERR_RANGE before anything is drawn. */
 zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp);
+/* The same limits for bare positions (lines and points). */
+zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp);
 zl_status zl_check_lines(const zl_lines *l);
 void zl_lines_mesh(const zl_lines *l, zl_mesh *m);
 

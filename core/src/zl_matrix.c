@@ -251,21 +251,22 @@ zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out)
  * overflow is every vertex transformed. Pixel space (no matrix) takes any
  * Q16.16 position: x, y are clipped to the guard band, z to 0..1.
  */
-zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp)
+zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp)
 {
-    zl_status st = zl_check_mesh(m, mvp == NULL);
     int64_t big[4] = {0, 0, 0, ZL_FX_ONE};
     uint32_t i, n;
     int row, k, exact = 0;
-    if (st != ZL_OK || mvp == NULL)
-        return st;
+    if (mvp == NULL)
+        return ZL_OK;
     for (i = 0; i < 16; i++)
         if (!in_coord_range(mvp->m[i]))
             return ZL_ERR_RANGE;
-    n = (uint32_t)m->vertex_count * 3u;
+    if (positions == NULL)
+        return ZL_OK;
+    n = vertex_count * 3u;
     for (i = 0; i < n; i += 3) {
         for (k = 0; k < 3; k++) {
-            zl_fixed v = m->positions[i + (uint32_t)k];
+            zl_fixed v = positions[i + (uint32_t)k];
             int64_t a = v < 0 ? -(int64_t)v : v;
             if (!in_coord_range(v))
                 return ZL_ERR_RANGE;
@@ -286,11 +287,19 @@ zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp)
     for (i = 0; exact && i < n; i += 3) {
         zl_vec3 v;
         zl_vec4 c;
-        v.x = m->positions[i];
-        v.y = m->positions[i + 1];
-        v.z = m->positions[i + 2];
+        v.x = positions[i];
+        v.y = positions[i + 1];
+        v.z = positions[i + 2];
         if (zl_transform_point(mvp, v, &c) != ZL_OK)
             return ZL_ERR_RANGE;
     }
     return ZL_OK;
+}
+
+zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp)
+{
+    zl_status st = zl_check_mesh(m, mvp == NULL);
+    if (st != ZL_OK)
+        return st;
+    return zl_check_positions(m->positions, m->vertex_count, mvp);
 }
