@@ -702,6 +702,34 @@ static void test_bsp_malformed_tree_writes_nothing(void)
     TEST_ASSERT_EQUAL_UINT(0, zt_guard_check());
 }
 
+/* Lines and points obey the same transform limits as meshes. */
+static void test_lines_coordinates_at_the_limit(void)
+{
+    zl_fixed pos[] = {-COORD_LIMIT, -COORD_LIMIT / 2, 0, COORD_LIMIT, COORD_LIMIT / 2, 0};
+    zl_lines l;
+    zl_mat4 m;
+    memset(&l, 0, sizeof l);
+    l.positions = pos;
+    l.vertex_count = 2;
+    l.count = 2;
+    l.prim = ZL_PRIM_LINES;
+    make(16, 16, ZL_FORMAT_RGB565);
+    scale_matrix(&m, 4, 4);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_lines(&ctx, &l, &m));
+    TEST_ASSERT_TRUE(count_px(0xFFFFu) >= 16);
+    ZT_ASSERT_SURFACE_INTACT(&surf);
+    make(16, 16, ZL_FORMAT_RGB565);
+    snapshot();
+    pos[3] = COORD_LIMIT + 1;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_draw_lines(&ctx, &l, &m));
+    pos[3] = COORD_LIMIT;
+    scale_matrix(&m, COORD_LIMIT + 1, 4);
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_draw_lines(&ctx, &l, &m));
+    scale_matrix(&m, COORD_LIMIT, 4); /* 16384 * 16384: clip space overflows */
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_draw_lines(&ctx, &l, &m));
+    assert_untouched();
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -709,6 +737,7 @@ int main(void)
     RUN_TEST(test_window_4096_frame_mode_strips);
     RUN_TEST(test_model_coordinates_and_matrix_at_the_limit);
     RUN_TEST(test_clip_space_overflow);
+    RUN_TEST(test_lines_coordinates_at_the_limit);
     RUN_TEST(test_far_outside_the_guard_band);
     RUN_TEST(test_largest_pixel_space_triangle_is_exact);
     RUN_TEST(test_one_subpixel_triangle);
