@@ -520,6 +520,56 @@ static void test_antialiased_lines_against_the_weights(void)
     ctx.style.line_aa = 0;
 }
 
+/* The RGB565 loop (LESS with writes, all channels) covers the same pixels
+ * with the same depths as the general one. */
+static void test_rgb565_loop_matches_the_rule(void)
+{
+    static uint16_t c565[W * H], z565[W * H];
+    zl_target t;
+    zl_context c;
+    zl_rgb black = {0, 0, 0};
+    int i, k;
+    make_target();
+    memset(&t, 0, sizeof t);
+    t.color = c565;
+    t.color_stride = W * 2;
+    t.depth = z565;
+    t.depth_stride = W * 2;
+    t.width = W;
+    t.height = H;
+    t.format = ZL_FORMAT_RGB565;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&c, &t));
+    ctx.state.depth_test = 1;
+    ctx.state.depth_write = 1;
+    ctx.state.color.r = 255;
+    c.state.color.r = 255;
+    for (i = 0; i < 500; i++) {
+        zl_fixed a[3], b[3];
+        zl_lines l;
+        zl_fixed pos[6];
+        a[0] = rand_range(-200 * 16, (W + 200) * 16) * 4096;
+        a[1] = rand_range(-200 * 16, (H + 200) * 16) * 4096;
+        b[0] = rand_range(-200 * 16, (W + 200) * 16) * 4096;
+        b[1] = rand_range(-200 * 16, (H + 200) * 16) * 4096;
+        a[2] = rand_range(0, 65535);
+        b[2] = rand_range(0, 65535);
+        clear();
+        draw_segment(a, b, ZL_LINE_BRESENHAM); /* RGB888: the general loop */
+        memcpy(pos, a, sizeof a);
+        memcpy(pos + 3, b, sizeof b);
+        memset(&l, 0, sizeof l);
+        l.positions = pos;
+        l.vertex_count = 2;
+        l.count = 2;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c, black, 65535));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_lines(&c, &l, NULL));
+        for (k = 0; k < W * H; k++) {
+            TEST_ASSERT_EQUAL_UINT16(depth[k], z565[k]);
+            TEST_ASSERT_EQUAL_INT(color[k * 3] != 0, c565[k] != 0);
+        }
+    }
+}
+
 static void test_invalid_arguments(void)
 {
     zl_fixed pos[6] = {0};
@@ -555,6 +605,7 @@ int main(void)
     RUN_TEST(test_strip_and_loop_cover_their_segments);
     RUN_TEST(test_points);
     RUN_TEST(test_antialiased_lines_against_the_weights);
+    RUN_TEST(test_rgb565_loop_matches_the_rule);
     RUN_TEST(test_invalid_arguments);
     return UNITY_END();
 }

@@ -332,6 +332,71 @@ static void test_lighting_modulates_and_invalid_textures(void)
     }
 }
 
+/* The RGB565 fast loop and the general loop (RGB888 here) sample the same
+ * texels: random textured triangles in both formats, the RGB888 image
+ * converted to RGB565 must equal the other bit for bit. */
+static void test_fast_and_general_loops_agree(void)
+{
+    static uint8_t c888[W * H * 3];
+    static uint16_t d2[W * H];
+    static zl_fixed pos[9], uv[6];
+    static const uint16_t idx[3] = {0, 1, 2};
+    zl_mesh m = {pos, idx, NULL, NULL, 3, 1};
+    zl_texture tex;
+    zl_target t2;
+    zl_context c2;
+    zl_rgb black = {0, 0, 0};
+    uint32_t rng = 7;
+    int n, k, i;
+    make_texture();
+    make_target();
+    camera();
+    memset(&t2, 0, sizeof t2);
+    t2.color = c888;
+    t2.color_stride = W * 3;
+    t2.depth = d2;
+    t2.depth_stride = W * 2;
+    t2.width = W;
+    t2.height = H;
+    t2.format = ZL_FORMAT_RGB888;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&c2, &t2));
+    memset(&tex, 0, sizeof tex);
+    tex.texels = texels;
+    tex.width = TS;
+    tex.height = TS / 2;
+    tex.stride = TS;
+    for (n = 0; n < 200; n++) {
+        for (k = 0; k < 9; k++) {
+            rng ^= rng << 13;
+            rng ^= rng >> 17;
+            rng ^= rng << 5;
+            pos[k] = (zl_fixed)(rng % (6u * 65536u)) - 3 * 65536;
+        }
+        for (k = 0; k < 6; k++) {
+            rng ^= rng << 13;
+            rng ^= rng >> 17;
+            rng ^= rng << 5;
+            uv[k] = (zl_fixed)(rng % (8u * 65536u)) - 4 * 65536;
+        }
+        tex.wrap_s = (uint8_t)(n & 1);
+        tex.wrap_t = (uint8_t)((n >> 1) & 1);
+        ctx.style.texture = &tex;
+        ctx.style.texcoords = uv;
+        ctx.style.tex_mapping = (uint8_t)(n % 3 != 0);
+        ctx.style.tex_every = (uint8_t)(n % 3 == 2 ? 8 : 0);
+        c2.style = ctx.style;
+        clear();
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c2, black, 65535));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, &mvp));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&c2, &m, &mvp));
+        for (i = 0; i < W * H; i++) {
+            uint16_t from888 = (uint16_t)(((c888[i * 3] >> 3) << 11) | ((c888[i * 3 + 1] >> 2) << 5) | (c888[i * 3 + 2] >> 3));
+            TEST_ASSERT_EQUAL_HEX16(from888, color[i]);
+            TEST_ASSERT_EQUAL_UINT16(d2[i], depth[i]);
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -339,6 +404,7 @@ int main(void)
     RUN_TEST(test_floor_affine_is_visibly_different);
     RUN_TEST(test_floor_exact_every_16);
     RUN_TEST(test_wrap_and_clamp);
+    RUN_TEST(test_fast_and_general_loops_agree);
     RUN_TEST(test_lighting_modulates_and_invalid_textures);
     return UNITY_END();
 }

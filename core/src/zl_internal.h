@@ -151,6 +151,15 @@ typedef struct {
 #define ZL_NOINLINE
 #endif
 
+/* Force a tiny helper of the span loops inline even at -Os, where GCC stops
+ * inlining a function once it has many callers (and each span loop would
+ * then make a call per pixel). */
+#if defined(__GNUC__)
+#define ZL_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ZL_ALWAYS_INLINE inline
+#endif
+
 /* ---- zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour
  * included). Returns 0 if the transform leaves its range. */
