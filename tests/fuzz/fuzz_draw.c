@@ -1,6 +1,7 @@
 /*
- * Fuzz target: frame mode (zl_init, zl_clear, zl_draw_mesh) fed arbitrary
- * targets, meshes, matrices and render states.
+ * Fuzz target: frame mode (zl_init, zl_clear, zl_draw_mesh, zl_draw_lines)
+ * fed arbitrary targets, meshes, lines, matrices, render states and styles
+ * (polygon modes, offsets, textures, toon shading).
  *
  * Every colour and depth buffer is allocated with exactly the size zline.h
  * promises ((height - 1) * stride + width * bpp) between guard zones, so
@@ -91,6 +92,84 @@ static int range_ok(const zl_mesh *m, const zl_mat4 *mvp)
     return 1;
 }
 
+/* Style (zline.h: lines, polygon modes, offsets, textures, toon): every
+ * field arbitrary. The arrays it points to are allocated with exactly the
+ * size promised (texels: (height - 1) * stride + width, texcoords: 2 per
+ * vertex, toon colours: toon_bands) and no guard zone, so that
+ * AddressSanitizer catches a read past any of them. */
+typedef struct {
+    zl_style style;
+    zl_texture tex;
+    uint16_t *texels;
+    zl_fixed *texcoords;
+    zl_rgb *toon;
+} fz_style;
+
+static void read_style(fz_in *in, fz_style *fs, unsigned vertex_count)
+{
+    uint32_t f = fz_u8(in);
+    memset(fs, 0, sizeof *fs);
+    zl_style_default(&fs->style);
+    if (!(f & 1u))
+        return;
+    fs->style.polygon_front = fz_enum(in, 3);
+    fs->style.polygon_back = fz_enum(in, 3);
+    fs->style.point_size = (uint8_t)fz_u8(in);
+    fs->style.line_algo = fz_enum(in, 2);
+    fs->style.offset_factor = fz_fixed(in);
+    fs->style.offset_units = fz_fixed(in);
+    fs->style.tex_mapping = fz_enum(in, 2);
+    fs->style.tex_every = (uint8_t)fz_u8(in);
+    fs->style.persp_gouraud = fz_enum(in, 2);
+    fs->style.line_aa = fz_enum(in, 2);
+    if (f & 2u) {
+        unsigned i, n;
+        fs->tex.width = (uint16_t)(1u << (fz_u8(in) % 6));
+        fs->tex.height = (uint16_t)(1u << (fz_u8(in) % 6));
+        if (f & 4u) /* not a power of two, or a short stride */
+            fs->tex.width = (uint16_t)(fs->tex.width + 1u);
+        fs->tex.stride = (uint16_t)(fs->tex.width + fz_u8(in) % 3 - ((f & 8u) ? 1 : 0));
+        fs->tex.wrap_s = fz_enum(in, 2);
+        fs->tex.wrap_t = fz_enum(in, 2);
+        n = (unsigned)(fs->tex.height - 1u) * fs->tex.stride + fs->tex.width;
+        fs->texels = (uint16_t *)malloc(n * sizeof(uint16_t));
+        if (fs->texels == NULL)
+            abort();
+        for (i = 0; i < n; i++)
+            fs->texels[i] = (uint16_t)(i * 2654435761u >> 16);
+        fs->tex.texels = fs->texels;
+        fs->style.texture = &fs->tex;
+        if (vertex_count > 0) {
+            fs->texcoords = (zl_fixed *)malloc(vertex_count * 2 * sizeof(zl_fixed));
+            if (fs->texcoords == NULL)
+                abort();
+            for (i = 0; i < vertex_count * 2; i++)
+                fs->texcoords[i] = fz_fixed(in);
+        }
+        fs->style.texcoords = fs->texcoords;
+    }
+    if (f & 16u) {
+        unsigned i;
+        fs->style.toon_bands = (uint8_t)(1 + fz_u8(in) % 8);
+        fs->toon = (zl_rgb *)malloc(fs->style.toon_bands * sizeof(zl_rgb));
+        if (fs->toon == NULL)
+            abort();
+        for (i = 0; i < fs->style.toon_bands; i++) {
+            fs->toon[i].r = (uint8_t)fz_u8(in);
+            fs->toon[i].g = (uint8_t)fz_u8(in);
+            fs->toon[i].b = (uint8_t)fz_u8(in);
+        }
+        fs->style.toon_colors = fs->toon;
+    }
+}
+
+static void free_style(fz_style *fs)
+{
+    free(fs->texels);
+    free(fs->texcoords);
+    free(fs->toon);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -165,23 +244,60 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     draws = 1 + fz_u8(&in) % 3;
     for (d = 0; d < draws; d++) {
         static fz_mesh fm;
+        fz_style fs;
         zl_mat4 m;
         const zl_mat4 *mvp;
-        int state_ok, ptrs_ok, expect_ok;
+        int state_ok, ptrs_ok, expect_ok, lines = (fz_u8(&in) & 7u) == 0;
         fz_read_mesh(&in, &fm, w, h);
         fz_read_state(&in, &ctx.state, &state_ok);
         mvp = fz_read_matrix(&in, &m);
-        ptrs_ok = (fm.mesh.vertex_count == 0 || fm.mesh.positions != NULL) &&
-                  (fm.mesh.triangle_count == 0 || fm.mesh.indices != NULL);
-        expect_ok = state_ok && ptrs_ok && fm.indices_ok && range_ok(&fm.mesh, mvp);
+        read_style(&in, &fs, fm.mesh.vertex_count);
+        ctx.style = fs.style;
         plane_snap(&color);
         plane_snap(&depth);
-        st = zl_draw_mesh(&ctx, &fm.mesh, mvp);
-        FZ_REQUIRE((st == ZL_OK) == (expect_ok != 0), "zl_draw_mesh returned %d, expected %s", st,
-                   expect_ok ? "ZL_OK" : "an error");
-        FZ_REQUIRE(st == ZL_OK || st == ZL_ERR_ARG || st == ZL_ERR_RANGE, "unexpected status %d", st);
-        plane_check(&color, st != ZL_OK, "colour after zl_draw_mesh");
-        plane_check(&depth, st != ZL_OK, "depth after zl_draw_mesh");
+        if (lines) {
+            /* the mesh's positions and indices as lines or points */
+            zl_lines l;
+            unsigned i;
+            memset(&l, 0, sizeof l);
+            l.positions = fm.mesh.positions;
+            l.indices = (fz_u8(&in) & 1u) ? fm.mesh.indices : NULL;
+            l.colors = fm.mesh.face_colors;
+            l.vertex_count = fm.mesh.vertex_count;
+            l.count = (uint16_t)(fz_u8(&in) % (fm.mesh.triangle_count * 3u + 1u));
+            if (l.colors != NULL && l.count > fm.mesh.triangle_count)
+                l.count = fm.mesh.triangle_count; /* colours: one per primitive, at most count */
+            l.prim = fz_enum(&in, 4);
+            ptrs_ok = l.count == 0 || l.positions != NULL;
+            expect_ok = state_ok && ptrs_ok && l.prim <= ZL_PRIM_POINTS;
+            for (i = 0; i < l.count && expect_ok; i++)
+                if ((l.indices ? l.indices[i] : i) >= l.vertex_count)
+                    expect_ok = 0;
+            {
+                zl_mesh pm = fm.mesh;
+                pm.indices = NULL;
+                pm.triangle_count = 0;
+                pm.positions = l.positions;
+                expect_ok = expect_ok && range_ok(&pm, mvp);
+            }
+            st = zl_draw_lines(&ctx, &l, mvp);
+        } else {
+            ptrs_ok = (fm.mesh.vertex_count == 0 || fm.mesh.positions != NULL) &&
+                      (fm.mesh.triangle_count == 0 || fm.mesh.indices != NULL);
+            expect_ok = state_ok && ptrs_ok && fm.indices_ok && range_ok(&fm.mesh, mvp);
+            st = zl_draw_mesh(&ctx, &fm.mesh, mvp);
+        }
+        /* the style is checked by zl_style_check; any other refusal is a bug */
+        if (zl_style_check(&fs.style) != ZL_OK)
+            FZ_REQUIRE(st != ZL_OK, "a draw accepted a style zl_style_check refuses");
+        else
+            FZ_REQUIRE((st == ZL_OK) == (expect_ok != 0), "%s returned %d, expected %s",
+                       lines ? "zl_draw_lines" : "zl_draw_mesh", st, expect_ok ? "ZL_OK" : "an error");
+        FZ_REQUIRE(st == ZL_OK || st == ZL_ERR_ARG || st == ZL_ERR_RANGE || st == ZL_ERR_SIZE,
+                   "unexpected status %d", st);
+        plane_check(&color, st != ZL_OK, "colour after a draw");
+        plane_check(&depth, st != ZL_OK, "depth after a draw");
+        free_style(&fs);
     }
 done:
     plane_free(&color);
