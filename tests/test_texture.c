@@ -397,6 +397,59 @@ static void test_fast_and_general_loops_agree(void)
     }
 }
 
+/* Perspective-correct Gouraud: red goes 0 .. 255 from the near edge of the
+ * floor to the far one (linear in z); the reference is the floor point seen
+ * through each pixel centre. Screen-linear Gouraud must be far off. */
+static void test_perspective_gouraud(void)
+{
+    static const uint8_t vcol[] = {0, 0, 0, 0, 0, 0, 255, 0, 0, 255, 0, 0};
+    static uint8_t c888[W * H * 3];
+    static uint16_t d2[W * H];
+    zl_mesh m = {floor_pos, floor_idx, vcol, NULL, 4, 2};
+    zl_target t2;
+    zl_context c2;
+    zl_rgb black = {0, 0, 0};
+    int pass, x, y, checked = 0, worst[2] = {0, 0};
+    camera();
+    memset(&t2, 0, sizeof t2);
+    t2.color = c888;
+    t2.color_stride = W * 3;
+    t2.depth = d2;
+    t2.depth_stride = W * 2;
+    t2.width = W;
+    t2.height = H;
+    t2.format = ZL_FORMAT_RGB888;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&c2, &t2));
+    c2.state.shading = ZL_SHADE_GOURAUD;
+    for (pass = 0; pass < 2; pass++) {
+        c2.style.persp_gouraud = (uint8_t)(pass == 0);
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c2, black, 65535));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&c2, &m, &mvp));
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++) {
+                double u, v, ref;
+                int e;
+                if (d2[y * W + x] == 65535 || !reference(x + 0.5, y + 0.5, &u, &v))
+                    continue;
+                ref = v / (3.0 * TS) * 255.0; /* v = 3 (-1 - z) / 40 texels of TS */
+                e = (int)(c888[(y * W + x) * 3] - ref + (c888[(y * W + x) * 3] >= ref ? 0.5 : -0.5));
+                e = e < 0 ? -e : e;
+                if (e > worst[pass])
+                    worst[pass] = e;
+                checked += pass == 0;
+            }
+    }
+    {
+        char msg[120];
+        snprintf(msg, sizeof msg, "Gouraud: perspective worst %d, screen-linear worst %d (of 255), %d pixels", worst[0],
+                 worst[1], checked);
+        TEST_MESSAGE(msg);
+        TEST_ASSERT_GREATER_THAN(W * H / 4, checked);
+        TEST_ASSERT_LESS_OR_EQUAL_MESSAGE(2, worst[0], msg);
+        TEST_ASSERT_GREATER_THAN_MESSAGE(20, worst[1], msg);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -405,6 +458,7 @@ int main(void)
     RUN_TEST(test_floor_exact_every_16);
     RUN_TEST(test_wrap_and_clamp);
     RUN_TEST(test_fast_and_general_loops_agree);
+    RUN_TEST(test_perspective_gouraud);
     RUN_TEST(test_lighting_modulates_and_invalid_textures);
     return UNITY_END();
 }
