@@ -49,6 +49,7 @@
 #include "scenes.h"
 #include "zl_internal.h"
 #include "zl_port.h"
+#include "budget.h"
 
 #ifndef BENCH_TAG
 #define BENCH_TAG "bench"
@@ -131,40 +132,9 @@ static uint32_t fnv1a(const void *p, size_t n, uint32_t h)
     return h;
 }
 
-/* --------------------------------------------------------------- budgets */
-
 static int check_budget(const char *scene_name, uint32_t total)
 {
-    char line[160], tag[40], name[40];
-    unsigned long budget = 0, b;
-    int found = 0;
-    FILE *f = fopen(BENCH_BUDGETS, "r");
-    if (f == NULL) {
-        printf("BUDGET FAIL %s %s: cannot read %s\n", BENCH_TAG, scene_name, BENCH_BUDGETS);
-        return 1;
-    }
-    while (fgets(line, sizeof line, f) != NULL)
-        if (sscanf(line, "%39s %39s %lu", tag, name, &b) == 3 && strcmp(tag, BENCH_TAG) == 0 &&
-            strcmp(name, scene_name) == 0) {
-            budget = b;
-            found = 1;
-        }
-    fclose(f);
-    /* budget proposal: the measurement plus 3 %, rounded up to 1000 */
-    printf("BUDGET_SUGGEST %s %s %lu\n", BENCH_TAG, scene_name,
-           (unsigned long)(((uint64_t)total * 103 / 100 + 999) / 1000 * 1000));
-    if (!found) {
-        printf("BUDGET FAIL %s %s: no budget in %s (measured %lu)\n", BENCH_TAG, scene_name, BENCH_BUDGETS,
-               (unsigned long)total);
-        return 1;
-    }
-    if (total > budget) {
-        printf("BUDGET FAIL %s %s: %lu instructions, budget %lu (+%.1f %%)\n", BENCH_TAG, scene_name,
-               (unsigned long)total, budget, 100.0 * ((double)total - (double)budget) / (double)budget);
-        return 1;
-    }
-    printf("BUDGET ok %s %s: %lu <= %lu\n", BENCH_TAG, scene_name, (unsigned long)total, budget);
-    return 0;
+    return bench_check_budget(BENCH_TAG, BENCH_BUDGETS, scene_name, total);
 }
 
 #ifdef BENCH_FRAME

@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "budget.h"
 #include "zline/zline.h"
 
 #ifndef BENCH_TAG
@@ -99,10 +100,13 @@ static unsigned written(void)
     return n;
 }
 
-static void report(const char *name, uint32_t insns, unsigned pixels)
+/* Print a loop's count and check it against its budget (budgets.txt):
+ * returns 1 when over budget, so a slower loop fails CTest. */
+static int report(const char *name, uint32_t insns, unsigned pixels)
 {
     printf("FEATURE %s %s %lu %u %lu\n", BENCH_TAG, name, (unsigned long)insns, pixels,
            pixels ? (unsigned long)((uint64_t)insns * 100u / pixels) : 0ul);
+    return bench_check_budget(BENCH_TAG, BENCH_BUDGETS, name, insns);
 }
 
 /* 239 segments from (0, k) to (319, k + 1), pixel centres, depth 0.5. */
@@ -136,8 +140,7 @@ static int run_lines(int aa)
     if (st != ZL_OK)
         return 1;
     /* antialiased lines write no depth: count their columns instead */
-    report(aa ? "line_aa" : "line", between(0, 1), aa ? 239u * 320u : written());
-    return 0;
+    return report(aa ? "line_aa" : "line", between(0, 1), aa ? 239u * 320u : written());
 }
 
 /* A screen-filling quad in pixel space, texture repeated 4 x 3 times. */
@@ -169,8 +172,7 @@ static int run_quad(const char *name, int textured, unsigned mapping, unsigned e
     mark();
     if (st != ZL_OK)
         return 1;
-    report(name, between(0, 1), written());
-    return 0;
+    return report(name, between(0, 1), written());
 }
 
 int main(void)

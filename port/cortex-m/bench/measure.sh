@@ -20,7 +20,8 @@ mkdir -p "$out"
 
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
     -DZLINE_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os >/dev/null
+cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os \
+    bench_features_O2 bench_features_Os >/dev/null
 
 plugin=$out/m4timing.so
 if ! ${CC:-cc} -std=c99 -O2 -shared -fPIC -o "$plugin" tools/qemu-m4-timing/m4timing.c 2>"$out/plugin.log"; then
@@ -42,6 +43,12 @@ for tag in $tags; do
     fi
     "$@" -kernel "$elf" >"$out/$tag.txt" || status=1
     arm-none-eabi-size -A "$elf" >"$out/$tag.size"
+done
+# The per-pixel loops of lines and textures (bench_features.c).
+for opt in O2 Os; do
+    qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+        -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6 \
+        -kernel "$bench/bench_features_$opt.elf" >"$out/features-$opt.txt" || status=1
 done
 [ $status -eq 0 ] || echo "measure.sh: a benchmark reported a failure (BUDGET FAIL?): see $out/*.txt" >&2
 
@@ -153,6 +160,15 @@ echo "|---|---:|---:|---:|---:|---:|"
 for tag in $tags; do
     stack=$(awk -v t="$tag" '$1 == t && $3 == "stack" && $4 > m { m = $4 } END { print m }' "$R")
     echo "| bench_${tag%-*}_${tag#*-} | $(num "$(get $tag - flash_core)") | $(num "$(get $tag - flash_meshes)") | $(num "$(get $tag - flash_elf)") | $(num "$(get $tag - ram_data_bss)") | $(num "$stack") |"
+done
+echo
+echo "### Instructions per pixel of the line and texture loops (bench_features.c, whole draw call / pixels)"
+echo
+echo "| loop | -O2 | -Os |"
+echo "|---|---:|---:|"
+for f in line line_aa flat tex_affine tex_persp tex_persp16; do
+    per() { awk -v f="$f" '$1 == "FEATURE" && $3 == f { printf "%.1f", $6 / 100; exit }' "$out/features-$1.txt"; }
+    echo "| $f | $(per O2) | $(per Os) |"
 done
 mism=$(awk '$3 ~ /_plugin_insn_mismatch$/' "$R")
 echo
