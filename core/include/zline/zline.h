@@ -544,9 +544,11 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  *   max_vertices   sum of vertex_count over the meshes
  *   max_triangles  triangles kept after culling and off-screen rejection
  *                  (the sum of triangle_count always suffices); <= 65535
- *   max_active     triangles crossing one row at once (the sum of
- *                  triangle_count always suffices; a clipped triangle
- *                  counts once per piece, up to 7)
+ *   max_active     triangles crossing one row at once, 1 .. 65534; a
+ *                  clipped triangle counts once per piece (up to 8), so
+ *                  8 x the sum of triangle_count always suffices when
+ *                  that is below the cap; zl_frame_needs() gives the exact
+ *                  figure of a scene
  * When the submitted scene needs more, the first zl_frame_next_band fails
  * with ZL_ERR_CAPACITY before drawing anything, and zl_frame_needs() tells
  * the capacities it needs.
