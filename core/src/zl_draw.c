@@ -149,13 +149,10 @@ static ZL_NOINLINE void draw_pieces(const zl_context *ctx, const zl_source *src,
     }
 }
 
-zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
+/* The checks every draw call starts with: context, target, state, style. */
+static zl_status check_context(const zl_context *ctx)
 {
-    zl_source src;
-    zl_span_state ss;
     zl_status st;
-    uint32_t t;
-    int planes;
     if (ctx == NULL)
         return ZL_ERR_ARG;
     st = check_target(&ctx->target);
@@ -163,16 +160,33 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
         st = zl_state_check(&ctx->state);
     if (st == ZL_OK)
         st = zl_style_check(&ctx->style);
+    return st;
+}
+
+/* A draw's vertex source: the context's state and target, no cache. */
+static void source_init(zl_source *src, const zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
+{
+    src->mesh = mesh;
+    src->mvp = mvp;
+    src->state = &ctx->state;
+    src->cache = NULL;
+    src->width = ctx->target.width;
+    src->height = ctx->target.height;
+}
+
+zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
+{
+    zl_source src;
+    zl_span_state ss;
+    zl_status st;
+    uint32_t t;
+    int planes;
+    st = check_context(ctx);
     if (st == ZL_OK)
         st = zl_check_geometry(mesh, mvp);
     if (st != ZL_OK)
         return st;
-    src.mesh = mesh;
-    src.mvp = mvp;
-    src.state = &ctx->state;
-    src.cache = NULL;
-    src.width = ctx->target.width;
-    src.height = ctx->target.height;
+    source_init(&src, ctx, mesh, mvp);
     if (ctx->vertex_cache != NULL && ((uintptr_t)ctx->vertex_cache & 3u) == 0 &&
         ctx->vertex_cache_bytes >= ZL_VERTEX_CACHE_BYTES(mesh->vertex_count)) {
         /* Transform each vertex once; triangles read the cache exactly as
@@ -231,25 +245,14 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
     zl_span_state ss;
     zl_status st;
     uint32_t k;
-    if (ctx == NULL)
-        return ZL_ERR_ARG;
-    st = check_target(&ctx->target);
-    if (st == ZL_OK)
-        st = zl_state_check(&ctx->state);
-    if (st == ZL_OK)
-        st = zl_style_check(&ctx->style);
+    st = check_context(ctx);
     if (st == ZL_OK)
         st = zl_check_mesh(mesh, mvp == NULL);
     if (st == ZL_OK)
         st = zl_check_outline(mesh, outline);
     if (st != ZL_OK)
         return st;
-    src.mesh = mesh;
-    src.mvp = mvp;
-    src.state = &ctx->state;
-    src.cache = NULL;
-    src.width = ctx->target.width;
-    src.height = ctx->target.height;
+    source_init(&src, ctx, mesh, mvp);
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
     for (k = 0; k < outline->edge_count; k++) {
@@ -267,13 +270,7 @@ zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *m
     zl_status st;
     zl_mesh m;
     uint32_t k, n;
-    if (ctx == NULL)
-        return ZL_ERR_ARG;
-    st = check_target(&ctx->target);
-    if (st == ZL_OK)
-        st = zl_state_check(&ctx->state);
-    if (st == ZL_OK)
-        st = zl_style_check(&ctx->style);
+    st = check_context(ctx);
     if (st == ZL_OK)
         st = zl_check_lines(lines);
     if (st == ZL_OK) /* the transform limits (LIMITS in zline.h) */
