@@ -21,7 +21,7 @@ mkdir -p "$out"
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
     -DZLINE_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os \
-    bench_features_O2 bench_features_Os >/dev/null
+    bench_features_O2 bench_features_Os bench_vis_O2 >/dev/null
 
 plugin=$out/m4timing.so
 if ! ${CC:-cc} -std=c99 -O2 -shared -fPIC -o "$plugin" tools/qemu-m4-timing/m4timing.c 2>"$out/plugin.log"; then
@@ -50,6 +50,10 @@ for opt in O2 Os; do
         -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6 \
         -kernel "$bench/bench_features_$opt.elf" >"$out/features-$opt.txt" || status=1
 done
+# One bunny frame per visibility method (bench_vis.c).
+qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+    -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6 \
+    -kernel "$bench/bench_vis_O2.elf" >"$out/vis-O2.txt" || status=1
 [ $status -eq 0 ] || echo "measure.sh: a benchmark reported a failure (BUDGET FAIL?): see $out/*.txt" >&2
 
 if [ $update -eq 1 ]; then
@@ -169,6 +173,19 @@ echo "|---|---:|---:|"
 for f in line line_aa flat tex_affine tex_persp tex_persp16; do
     per() { awk -v f="$f" '$1 == "FEATURE" && $3 == f { printf "%.1f", $6 / 100; exit }' "$out/features-$1.txt"; }
     echo "| $f | $(per O2) | $(per Os) |"
+done
+echo
+echo "### Visibility methods on Cortex-M4 (bunny, -O2)"
+echo
+echo "One frame of the bunny benchmark scene per method (bench_vis.c): begin and planning to the last row. RAM: the work buffer plus the caller's colour and depth frames (2 bytes a pixel each where used); the BSP tree is const data in flash."
+echo
+echo "| method | instructions per frame | RAM bytes | of which work buffer |"
+echo "|---|---:|---:|---:|"
+for m in zbuffer scanline aet painter bsp-b2f bsp-f2b raycast; do
+    t=$(awk -v m="$m" '$1 == "INTERVAL" && $3 == m && $4 == "total" { print $5; exit }' "$out/vis-O2.txt")
+    r=$(awk -v m="$m" '$1 == "RESULT" && $3 == m && $4 == "ram_bytes" { print $5; exit }' "$out/vis-O2.txt")
+    w=$(awk -v m="$m" '$1 == "RESULT" && $3 == m && $4 == "work_bytes" { print $5; exit }' "$out/vis-O2.txt")
+    echo "| $m | $(num "$t") | $(num "$r") | $(num "$w") |"
 done
 mism=$(awk '$3 ~ /_plugin_insn_mismatch$/' "$R")
 echo
