@@ -40,6 +40,22 @@ static void test_isqrt_is_exact_floor(void)
         uint32_t r = zl_isqrt32(i);
         TEST_ASSERT_TRUE(r * r <= i && (r + 1) * (r + 1) > i);
     }
+    {
+        /* Random values over the whole range, and squares and their neighbours. */
+        uint32_t x = 2463534242u, k;
+        for (k = 0; k < 20000; k++) {
+            uint32_t r;
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            r = zl_isqrt32(x >> (k % 32));
+            TEST_ASSERT_TRUE((uint64_t)r * r <= (x >> (k % 32)) && ((uint64_t)r + 1) * (r + 1) > (x >> (k % 32)));
+        }
+        for (k = 1; k < 65536; k += 37) {
+            TEST_ASSERT_EQUAL_UINT(k, zl_isqrt32(k * k));
+            TEST_ASSERT_EQUAL_UINT(k - 1, zl_isqrt32(k * k - 1));
+        }
+    }
     TEST_ASSERT_EQUAL_UINT(65535u, zl_isqrt32(0xFFFFFFFFu));
     TEST_ASSERT_EQUAL_UINT(0xFFFFFFFFu, zl_isqrt64(0xFFFFFFFFFFFFFFFFull));
     TEST_ASSERT_EQUAL_UINT(3037000499u, zl_isqrt64(9223372036854775807ull));

@@ -278,7 +278,7 @@ static unsigned face_intensity(const zl_source *s, const uint16_t *idx)
 {
     const zl_fixed *pos = s->mesh->positions;
     const zl_state *st = s->state;
-    int64_t e[6], n[3];
+    int64_t e[6], n[3], big;
     int32_t m[3], dot, cosv;
     uint32_t len;
     unsigned k, shift;
@@ -286,13 +286,24 @@ static unsigned face_intensity(const zl_source *s, const uint16_t *idx)
         e[k] = (int64_t)pos[idx[1] * 3u + k] - pos[idx[0] * 3u + k];
         e[k + 3] = (int64_t)pos[idx[2] * 3u + k] - pos[idx[0] * 3u + k];
     }
-    /* Edges below 2^30 so the cross product fits 64 bits... */
-    shift = shift_below(max_abs(e, 6), 30);
-    for (k = 0; k < 6; k++)
-        e[k] = zl_floor_shift64(e[k], shift);
-    n[0] = e[1] * e[5] - e[2] * e[4];
-    n[1] = e[2] * e[3] - e[0] * e[5];
-    n[2] = e[0] * e[4] - e[1] * e[3];
+    big = max_abs(e, 6);
+    if (big < ((int64_t)1 << 14)) {
+        /* Small triangles (most of a mesh): the same products in 32 bits. */
+        int32_t a[6];
+        for (k = 0; k < 6; k++)
+            a[k] = (int32_t)e[k];
+        n[0] = a[1] * a[5] - a[2] * a[4];
+        n[1] = a[2] * a[3] - a[0] * a[5];
+        n[2] = a[0] * a[4] - a[1] * a[3];
+    } else {
+        /* Edges below 2^30 so the cross product fits 64 bits... */
+        shift = shift_below(big, 30);
+        for (k = 0; k < 6; k++)
+            e[k] = zl_floor_shift64(e[k], shift);
+        n[0] = e[1] * e[5] - e[2] * e[4];
+        n[1] = e[2] * e[3] - e[0] * e[5];
+        n[2] = e[0] * e[4] - e[1] * e[3];
+    }
     /* ... and the normal below 2^14, enough for 8 bits of intensity. */
     shift = shift_below(max_abs(n, 3), 14);
     for (k = 0; k < 3; k++)
