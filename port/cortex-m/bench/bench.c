@@ -49,6 +49,7 @@
 #include "scenes.h"
 #include "zl_internal.h"
 #include "zl_port.h"
+#include "bench_timer.h"
 #include "budget.h"
 
 #ifndef BENCH_TAG
@@ -60,68 +61,9 @@
 
 /* ------------------------------------------------------------ counting */
 
-#define TIMER0_CTRL (*(volatile uint32_t *)0x40000000u)
-#define TIMER0_VALUE (*(volatile uint32_t *)0x40000004u)
-#define TIMER0_RELOAD (*(volatile uint32_t *)0x40000008u)
-
-#define MAX_STAMPS 1024
-static uint32_t stamps[MAX_STAMPS];
-static unsigned stamp_count;
-static uint32_t overhead; /* instructions of an empty interval */
-
-void mark(void);
-__attribute__((noinline)) void mark(void)
-{
-    uint32_t v = TIMER0_VALUE;
-    if (stamp_count < MAX_STAMPS)
-        stamps[stamp_count] = v;
-    stamp_count++;
-}
-
-/* Instructions since the timer started at stamp i (shift 6: see the top). */
-static uint32_t stamp_insns(unsigned i)
-{
-    uint64_t k = 0xFFFFFFFFu - stamps[i];
-    return (uint32_t)((5u * k + 7u) / 8u);
-}
-
-/* Instructions between stamps i and j, measurement cost removed. */
-static uint32_t between(unsigned i, unsigned j)
-{
-    return stamp_insns(j) - stamp_insns(i) - overhead;
-}
-
-static int timer_init(void)
-{
-    unsigned a, b, c, d;
-    TIMER0_CTRL = 0;
-    TIMER0_RELOAD = 0xFFFFFFFFu;
-    TIMER0_VALUE = 0xFFFFFFFFu;
-    TIMER0_CTRL = 1;
-    a = stamp_count;
-    mark();
-    mark();
-    overhead = 0;
-    overhead = between(a, a + 1);
-    /* 1000 nops: the conversion must give exactly 1000 */
-    c = stamp_count;
-    mark();
-    __asm__ volatile(".rept 1000\n nop\n .endr");
-    mark();
-    d = stamp_count - 1;
-    b = between(c, d);
-    if (b != 1000) {
-        printf("bench: 1000 nops counted as %lu (is QEMU running with -icount shift=6?)\n", (unsigned long)b);
-        return 1;
-    }
-    printf("# timer: exact (1000 nops = 1000), measurement overhead %lu instructions subtracted\n",
-           (unsigned long)overhead);
-    return 0;
-}
-
 static void interval(const char *scene_name, const char *key, unsigned i, unsigned j)
 {
-    printf("INTERVAL %s %s %s %lu %u %u\n", BENCH_TAG, scene_name, key, (unsigned long)between(i, j), i, j);
+    printf("INTERVAL %s %s %s %lu %u %u\n", BENCH_TAG, scene_name, key, (unsigned long)bench_between(i, j), i, j);
 }
 
 static uint32_t fnv1a(const void *p, size_t n, uint32_t h)
@@ -251,7 +193,7 @@ static int run_scene(const scene *s)
 
     /* one frame: clear + draw, with its stack high-water mark */
     base = zl_port_stack_paint();
-    m = stamp_count;
+    m = bench_stamp_count();
     mark();
     zl_clear(&ctx, bg, 65535);
     mark();
@@ -259,7 +201,7 @@ static int run_scene(const scene *s)
     mark();
     stack = zl_port_stack_used() - base;
     h_draw = fnv1a(depth_buf, sizeof depth_buf, fnv1a(color_buf, sizeof color_buf, 2166136261u));
-    total = between(m, m + 2);
+    total = bench_between(m, m + 2);
     interval(s->name, "total", m, m + 2);
     interval(s->name, "clear", m, m + 1);
     interval(s->name, "draw", m + 1, m + 2);
@@ -268,7 +210,7 @@ static int run_scene(const scene *s)
      * once, ZL_VERTEX_CACHE_BYTES(n) bytes of RAM): it must give the same image */
     ctx.vertex_cache = vcache_buf;
     ctx.vertex_cache_bytes = sizeof vcache_buf;
-    m = stamp_count;
+    m = bench_stamp_count();
     mark();
     zl_clear(&ctx, bg, 65535);
     zl_draw_mesh(&ctx, &s->mesh, &s->mvp);
@@ -283,7 +225,7 @@ static int run_scene(const scene *s)
 
     /* the staged variants, each after a clear */
     zl_clear(&ctx, bg, 65535);
-    m = stamp_count;
+    m = bench_stamp_count();
     mark();
     stage_polygons(s, &ctx);
     mark();
@@ -364,7 +306,7 @@ static int run_scene(const scene *s)
     }
     bytes = zl_frame_bytes(&cfg);
     base = zl_port_stack_paint();
-    m = stamp_count;
+    m = bench_stamp_count();
     mark();
     zl_frame_begin(&f, &cfg, work, bytes, bg, 65535);
     zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state);
@@ -392,14 +334,14 @@ static int run_scene(const scene *s)
     printf("RESULT %s %s work_bytes %lu\n", BENCH_TAG, s->name, (unsigned long)bytes);
     printf("RESULT %s %s stack %lu\n", BENCH_TAG, s->name, (unsigned long)stack);
     printf("RESULT %s %s color_hash %08lx rows %u\n", BENCH_TAG, s->name, (unsigned long)h, rows);
-    return check_budget(s->name, between(m, m + 2));
+    return check_budget(s->name, bench_between(m, m + 2));
 }
 #endif
 
 int main(void)
 {
     int which, failed = 0;
-    if (timer_init() != 0)
+    if (bench_timer_init("bench") != 0)
         return 100;
     printf("# %s: marks are numbered from 0; INTERVAL tag scene key instructions mark_from mark_to\n", BENCH_TAG);
     for (which = 0; which < SCENE_COUNT; which++) {

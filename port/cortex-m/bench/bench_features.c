@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "bench_timer.h"
 #include "budget.h"
 #include "zline/zline.h"
 
@@ -29,58 +30,6 @@ enum { W = 320, H = 240, TS = 64 };
 static uint16_t color_buf[W * H];
 static uint16_t depth_buf[W * H];
 static uint16_t texels[TS * TS];
-
-#define TIMER0_CTRL (*(volatile uint32_t *)0x40000000u)
-#define TIMER0_VALUE (*(volatile uint32_t *)0x40000004u)
-#define TIMER0_RELOAD (*(volatile uint32_t *)0x40000008u)
-
-static uint32_t stamps[8];
-static unsigned stamp_count;
-static uint32_t overhead;
-
-void mark(void);
-__attribute__((noinline)) void mark(void)
-{
-    uint32_t v = TIMER0_VALUE;
-    if (stamp_count < 8)
-        stamps[stamp_count] = v;
-    stamp_count++;
-}
-
-/* Instructions since the timer started (shift 6: ticks = 1.6 instructions). */
-static uint32_t stamp_insns(unsigned i)
-{
-    uint64_t k = 0xFFFFFFFFu - stamps[i];
-    return (uint32_t)((5u * k + 7u) / 8u);
-}
-
-static uint32_t between(unsigned i, unsigned j)
-{
-    return stamp_insns(j) - stamp_insns(i) - overhead;
-}
-
-static int timer_init(void)
-{
-    TIMER0_CTRL = 0;
-    TIMER0_RELOAD = 0xFFFFFFFFu;
-    TIMER0_VALUE = 0xFFFFFFFFu;
-    TIMER0_CTRL = 1;
-    stamp_count = 0;
-    mark();
-    mark();
-    overhead = 0;
-    overhead = between(0, 1);
-    stamp_count = 0;
-    mark();
-    __asm__ volatile(".rept 1000\n nop\n .endr");
-    mark();
-    if (between(0, 1) != 1000) {
-        printf("bench_features: 1000 nops counted as %lu (is QEMU running with -icount shift=6?)\n",
-               (unsigned long)between(0, 1));
-        return 1;
-    }
-    return 0;
-}
 
 static zl_context ctx;
 
@@ -116,7 +65,7 @@ static int run_lines(int aa)
 {
     zl_lines l;
     zl_status st;
-    unsigned k;
+    unsigned k, first;
     for (k = 0; k < 239; k++) {
         zl_fixed *p = &line_pos[k * 6];
         p[0] = ZL_FX_HALF;
@@ -133,14 +82,14 @@ static int run_lines(int aa)
     l.prim = ZL_PRIM_LINES;
     reset();
     ctx.style.line_aa = (uint8_t)aa;
-    stamp_count = 0;
+    first = bench_stamp_count();
     mark();
     st = zl_draw_lines(&ctx, &l, NULL);
     mark();
     if (st != ZL_OK)
         return 1;
     /* antialiased lines write no depth: count their columns instead */
-    return report(aa ? "line_aa" : "line", between(0, 1), aa ? 239u * 320u : written());
+    return report(aa ? "line_aa" : "line", bench_between(first, first + 1), aa ? 239u * 320u : written());
 }
 
 /* A screen-filling quad in pixel space, texture repeated 4 x 3 times. */
@@ -154,6 +103,7 @@ static int run_quad(const char *name, int textured, unsigned mapping, unsigned e
     zl_mesh m = {quad_pos, quad_idx, NULL, NULL, 4, 2};
     zl_texture tex;
     zl_status st;
+    unsigned first;
     memset(&tex, 0, sizeof tex);
     tex.texels = texels;
     tex.width = TS;
@@ -166,13 +116,13 @@ static int run_quad(const char *name, int textured, unsigned mapping, unsigned e
         ctx.style.tex_mapping = (uint8_t)mapping;
         ctx.style.tex_every = (uint8_t)every;
     }
-    stamp_count = 0;
+    first = bench_stamp_count();
     mark();
     st = zl_draw_mesh(&ctx, &m, NULL);
     mark();
     if (st != ZL_OK)
         return 1;
-    return report(name, between(0, 1), written());
+    return report(name, bench_between(first, first + 1), written());
 }
 
 int main(void)
@@ -180,7 +130,7 @@ int main(void)
     zl_target tg;
     int failed = 0;
     unsigned i;
-    if (timer_init() != 0)
+    if (bench_timer_init("bench_features") != 0)
         return 100;
     for (i = 0; i < TS * TS; i++)
         texels[i] = (uint16_t)((((i % TS) / 8 + (i / TS) / 8) & 1) ? 0xFFE0u : 0x001Fu);
