@@ -39,6 +39,68 @@ zl_status zl_fx_recip_checked(zl_fixed a, zl_fixed *out)
     return zl_fx_div_checked(ZL_FX_ONE, a, out);
 }
 
+/* Leading zero bits of v != 0: CLZ, one instruction on Cortex-M3 and up. */
+static unsigned clz32(uint32_t v)
+{
+#if defined(__GNUC__)
+    return (unsigned)__builtin_clz(v);
+#else
+    unsigned n = 0;
+    while (!(v & 0x80000000u)) {
+        v <<= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/*
+ * One 16-bit digit of (u * 2^16 + u0) / d for a normalised d (top bit set),
+ * u < d, u0 < 2^16 (Hacker's Delight, divlu): the estimate from the top
+ * half of d is at most 2 too large, and the test against the next digit
+ * removes the excess. *r gets the remainder, exact modulo 2^32 because the
+ * true remainder is below d.
+ */
+static uint32_t quotient_digit(uint32_t u, uint32_t u0, uint32_t d, uint32_t *r)
+{
+    uint32_t dh = d >> 16, dl = d & 0xFFFFu;
+    uint32_t q = u / dh, rh = u - q * dh;
+    while (q > 0xFFFFu || q * dl > ((rh << 16) | u0)) {
+        q--;
+        rh += dh;
+        if (rh > 0xFFFFu)
+            break;
+    }
+    *r = ((u << 16) | u0) - q * d;
+    return q;
+}
+
+uint32_t zl_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
+{
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, q, r;
+    if (hi == 0) {
+        /* Most numerators: one 32-bit division. */
+        q = lo / d;
+        r = lo - q * d;
+    } else {
+        /* Normalise so the divisor's top bit is set, then two digits. */
+        unsigned s = clz32(d);
+        uint32_t q1;
+        if (s != 0) {
+            d <<= s;
+            hi = (hi << s) | (lo >> (32u - s));
+            lo <<= s;
+        }
+        q1 = quotient_digit(hi, lo >> 16, d, &r);
+        q = quotient_digit(r, lo & 0xFFFFu, d, &r);
+        q |= q1 << 16;
+        r >>= s;
+    }
+    if (rem != NULL)
+        *rem = r;
+    return q;
+}
+
 uint32_t zl_isqrt64(uint64_t v)
 {
     /* Bit-by-bit method: one result bit per iteration, no division. */

@@ -101,6 +101,18 @@ static inline int64_t zl_round_div64(int64_t n, int64_t d)
     return zl_floor_div64(2 * n + d, 2 * d);
 }
 
+/*
+ * Unsigned 64-by-32 division with a 32-bit quotient: returns floor(n / d) and,
+ * when rem is not NULL, stores n mod d.
+ * PRECONDITION: d != 0 and (n >> 32) < d, i.e. the quotient fits 32 bits.
+ * d == 0 is a division by zero as in C; (n >> 32) >= d gives an unspecified
+ * quotient and remainder (no undefined behaviour).
+ * Exact for every such input. Two 32-bit divisions at most (one when n fits
+ * 32 bits), where the C 64-bit division is a libgcc call of ~60..200
+ * instructions on Cortex-M.
+ */
+uint32_t zl_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
+
 /* Saturate a 64-bit value into zl_fixed. */
 static inline zl_fixed zl_fx_sat(int64_t v)
 {
