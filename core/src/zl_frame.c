@@ -276,74 +276,6 @@ static int prim_record(const zl_frame *f, unsigned mi, const zl_source *s, uint3
     return zl_lines_record(s, &e->lines, &e->style, &f->meshes[mi].state, t, rec);
 }
 
-/* Row range of lines primitive t (one record); 0 when it shows nothing.
- * Out of line, like the next one, so its record is not on the stack of the
- * clipping path. */
-static ZL_NOINLINE unsigned classify_lines(const zl_frame *f, const zl_frame_mesh *m, const zl_source *s,
-                                           uint32_t t, int32_t *first, int32_t *end)
-{
-    unsigned mi = (unsigned)(m - f->meshes);
-    zl_active rec;
-    if (!prim_record(f, mi, s, t, &rec))
-        return 0;
-    *first = rec.row;
-    *end = rec.end;
-    return 1;
-}
-
-/* Line and point pieces of a triangle in those polygon modes: their own row
- * ranges, from a full setup (the colour does not matter here). */
-static ZL_NOINLINE unsigned classify_pieces(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *poly,
-                                            int32_t *first, int32_t *end)
-{
-    unsigned k, n, pieces = 0;
-    poly->light = 255;
-    poly->flat.r = poly->flat.g = poly->flat.b = 0;
-    n = zl_tri_pieces(s, sty, t, poly);
-    for (k = 0; k < n; k++) {
-        zl_active rec;
-        if (!zl_tri_piece(s, sty, t, poly, k, &rec, NULL, NULL))
-            continue;
-        pieces++;
-        if (rec.row < *first)
-            *first = rec.row;
-        if (rec.end > *end)
-            *end = rec.end;
-    }
-    return pieces;
-}
-
-/* Row range and piece count of triangle t; 0 when nothing of it shows. */
-static unsigned classify_source(const zl_frame *f, const zl_frame_mesh *m, uint32_t t, int32_t *first,
-                                int32_t *end)
-{
-    zl_source s;
-    zl_poly poly;
-    unsigned k, pieces = 0, mi = (unsigned)(m - f->meshes);
-    const zl_style *sty = style_of(f, mi);
-    source_of(f, m, &s);
-    *first = INT16_MAX;
-    *end = 0;
-    if (sty != NULL && ext_of(f, mi)->is_lines)
-        return classify_lines(f, m, &s, t, first, end);
-    if (!zl_tri_polygon_geom(&s, sty, t, &poly))
-        return 0;
-    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
-        return classify_pieces(&s, sty, t, &poly, first, end);
-    for (k = 1; k + 1 < poly.n; k++) {
-        int32_t a, b;
-        if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, f->cfg.width, f->cfg.height,
-                             &a, &b))
-            continue;
-        pieces++;
-        if (a < *first)
-            *first = a;
-        if (b > *end)
-            *end = b;
-    }
-    return pieces;
-}
-
 static void fill_cache(zl_frame *f)
 {
     uint16_t mi, v;
@@ -356,44 +288,178 @@ static void fill_cache(zl_frame *f)
     }
 }
 
-/* Pass over all triangles: count first rows (row_start) and, when diff is
- * given, add each triangle's pieces over its rows to the difference array. */
-static uint32_t count_pass(zl_frame *f, int32_t *diff, int place)
+/* State of a classification pass. The count pass (diff != NULL) counts first
+ * rows in row_start, adds each primitive's pieces over its rows to diff,
+ * writes the ids of the visible primitives in id order to visible[] (while
+ * they fit) and their first rows to the keys (while they fit). The place pass
+ * (diff == NULL) drops each id into its bucket of visible[]. */
+typedef struct {
+    int32_t *diff;
+    uint16_t *key_a, *key_b; /* spare work-buffer regions holding first rows */
+    uint32_t na, nb;         /* their capacities, in keys */
+    uint32_t n;              /* visible primitives so far */
+} plan_pass;
+
+static uint16_t *key_at(const plan_pass *p, uint32_t k)
 {
-    uint32_t visible = 0;
+    return k < p->na ? &p->key_a[k] : &p->key_b[k - p->na];
+}
+
+/* Record visible primitive id with row range [first, end) and its pieces. */
+static void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+{
+    if (p->diff == NULL) {
+        f->visible[f->row_start[first]++] = (uint16_t)id;
+    } else {
+        f->row_start[first]++;
+        p->diff[first] += (int32_t)pieces;
+        p->diff[end] -= (int32_t)pieces;
+        if (p->n < f->cfg.max_triangles)
+            f->visible[p->n] = (uint16_t)id;
+        if (p->n < p->na + p->nb)
+            *key_at(p, p->n) = (uint16_t)first;
+    }
+    p->n++;
+}
+
+/* Lines and outline records: one record per primitive. Out of line, like the
+ * next one, so its record is not on the stack of the clipping path. */
+static ZL_NOINLINE void classify_lines(zl_frame *f, plan_pass *p, unsigned mi, const zl_source *s)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    uint32_t t;
+    for (t = 0; t < m->mesh.triangle_count; t++) {
+        zl_active rec;
+        if (prim_record(f, mi, s, t, &rec))
+            note(f, p, m->tri_base + t, rec.row, rec.end, 1);
+    }
+}
+
+/* Triangles in line or point polygon modes: the row ranges of their pieces,
+ * from a full setup (the colour does not matter here). */
+static ZL_NOINLINE void classify_pieces(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                        const zl_style *sty)
+{
+    uint32_t t;
+    for (t = 0; t < m->mesh.triangle_count; t++) {
+        zl_poly poly;
+        unsigned k, n, pieces = 0;
+        int32_t first = INT16_MAX, end = 0;
+        if (!zl_tri_polygon_geom(s, sty, t, &poly))
+            continue;
+        poly.light = 255;
+        poly.flat.r = poly.flat.g = poly.flat.b = 0;
+        n = zl_tri_pieces(s, sty, t, &poly);
+        for (k = 0; k < n; k++) {
+            zl_active rec;
+            if (!zl_tri_piece(s, sty, t, &poly, k, &rec, NULL, NULL))
+                continue;
+            pieces++;
+            if (rec.row < first)
+                first = rec.row;
+            if (rec.end > end)
+                end = rec.end;
+        }
+        if (pieces != 0)
+            note(f, p, m->tri_base + t, first, end, pieces);
+    }
+}
+
+/* Filled triangles: the row range of every fan triangle of the polygon. */
+static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                          const zl_style *sty)
+{
+    uint16_t w = f->cfg.width, h = f->cfg.height;
+    uint32_t t, count = m->mesh.triangle_count;
+    for (t = 0; t < count; t++) {
+        zl_poly poly;
+        unsigned k, pieces = 0;
+        int32_t first = INT16_MAX, end = 0;
+        if (!zl_tri_polygon_geom(s, sty, t, &poly))
+            continue;
+        for (k = 1; k + 1 < poly.n; k++) {
+            int32_t a, b;
+            if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, w, h, &a, &b))
+                continue;
+            pieces++;
+            if (a < first)
+                first = a;
+            if (b > end)
+                end = b;
+        }
+        if (pieces != 0)
+            note(f, p, m->tri_base + t, first, end, pieces);
+    }
+}
+
+/* One pass over every primitive of every mesh; returns the visible ones. */
+static uint32_t classify_pass(zl_frame *f, plan_pass *p)
+{
     uint16_t mi;
+    p->n = 0;
     for (mi = 0; mi < f->mesh_count; mi++) {
         const zl_frame_mesh *m = &f->meshes[mi];
-        uint32_t t;
-        for (t = 0; t < m->mesh.triangle_count; t++) {
-            int32_t first, end;
-            unsigned pieces = classify_source(f, m, t, &first, &end);
-            if (pieces == 0)
-                continue;
-            if (place) {
-                f->visible[f->row_start[first]++] = (uint16_t)(m->tri_base + t);
-            } else {
-                f->row_start[first]++;
-                diff[first] += (int32_t)pieces;
-                diff[end] -= (int32_t)pieces;
-            }
-            visible++;
+        const zl_style *sty = style_of(f, mi);
+        zl_source s;
+        source_of(f, m, &s);
+        if (sty != NULL && ext_of(f, mi)->is_lines)
+            classify_lines(f, p, mi, &s);
+        else if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
+            classify_pieces(f, p, m, &s, sty);
+        else
+            classify_fill(f, p, m, &s, sty);
+    }
+    return p->n;
+}
+
+/* Bucket visible[0 .. n) by the first rows in the keys, stably and in place:
+ * each key becomes its element's place, then the permutation is applied a
+ * cycle at a time. row_start holds the bucket starts and ends at the ends. */
+static void place_by_keys(zl_frame *f, const plan_pass *p, uint32_t n)
+{
+    uint32_t k;
+    for (k = 0; k < n; k++) {
+        uint16_t *key = key_at(p, k);
+        *key = f->row_start[*key]++;
+    }
+    for (k = 0; k < n; k++) {
+        uint16_t *key = key_at(p, k);
+        while (*key != k) {
+            uint16_t j = *key, id = f->visible[k];
+            uint16_t *kj = key_at(p, j);
+            f->visible[k] = f->visible[j];
+            f->visible[j] = id;
+            *key = *kj;
+            *kj = j;
         }
     }
-    return visible;
 }
 
 static ZL_NOINLINE zl_status plan(zl_frame *f)
 {
-    int32_t *diff = (int32_t *)(void *)f->pool;
-    uint32_t running = 0, start = 0, peak = 0, slot;
+    layout l;
+    uint8_t *base = (uint8_t *)(void *)f->meshes;
+    uint32_t running = 0, start = 0, peak = 0, slot, visible;
     uint16_t h = f->cfg.height, j;
+    size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));
+    plan_pass p;
+    (void)layout_of(&f->cfg, &l); /* valid: zl_frame_begin checked it */
+    /* Until the first row the pool (after the difference array), the
+     * Gouraud records and everything from the texture planes to the colour
+     * bands are free: room for the first rows of the visible primitives,
+     * which then need no second classification. */
+    p.diff = (int32_t *)(void *)f->pool;
+    p.key_a = (uint16_t *)(void *)(base + l.pool + diff_bytes);
+    p.na = l.ext - l.pool > diff_bytes ? (uint32_t)((l.ext - l.pool - diff_bytes) / sizeof(uint16_t)) : 0;
+    p.key_b = (uint16_t *)(void *)(base + l.tex);
+    p.nb = (uint32_t)((l.total - l.tex) / sizeof(uint16_t));
     fill_cache(f);
     memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
-    memset(diff, 0, ((size_t)h + 1) * sizeof(int32_t));
-    f->needs.triangles = count_pass(f, diff, 0);
+    memset(p.diff, 0, ((size_t)h + 1) * sizeof(int32_t));
+    visible = classify_pass(f, &p);
+    f->needs.triangles = visible;
     for (j = 0; j < h; j++) {
-        running += (uint32_t)diff[j];
+        running += (uint32_t)p.diff[j];
         if (running > peak)
             peak = running;
     }
@@ -406,7 +472,12 @@ static ZL_NOINLINE zl_status plan(zl_frame *f)
         f->row_start[j] = (uint16_t)start;
         start += n;
     }
-    count_pass(f, NULL, 1);
+    if (visible <= p.na + p.nb) {
+        place_by_keys(f, &p, visible);
+    } else { /* the keys did not fit: classify again */
+        p.diff = NULL;
+        classify_pass(f, &p);
+    }
     /* The pool's free list: every record, in order. */
     for (slot = 0; slot < f->cfg.max_active; slot++)
         f->pool[slot].next = (uint16_t)(slot + 1u < f->cfg.max_active ? slot + 1u : ZL_LIST_END);
