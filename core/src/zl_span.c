@@ -46,6 +46,170 @@ static inline void span_flat_565(unsigned func, int clamp, uint16_t *crow, uint1
     }
 }
 
+/* Two pixels per step need little-endian 16-bit pairs in a 32-bit word. */
+static int little_endian(void)
+{
+    const uint16_t probe = 1;
+    uint8_t first;
+    memcpy(&first, &probe, 1);
+    return first == 1;
+}
+
+/* Tell the compiler a row pointer is 4-byte aligned (checked by the caller),
+ * so that the memcpy of a pixel pair is one 32-bit load or store even where
+ * unaligned access is not allowed (Cortex-M0). */
+#if defined(__GNUC__)
+#define ZL_ALIGNED4(p) __builtin_assume_aligned((p), 4)
+#else
+#define ZL_ALIGNED4(p) ((void *)(p))
+#endif
+
+/* Two 16-bit values at p as one 32-bit word (little-endian: p[0] low). The
+ * memcpy is free of aliasing trouble and compiles to one load or store. */
+static ZL_ALWAYS_INLINE uint32_t pair_load(const uint16_t *p)
+{
+    uint32_t w;
+    memcpy(&w, ZL_ALIGNED4(p), 4);
+    return w;
+}
+
+static ZL_ALWAYS_INLINE void pair_store(uint16_t *p, uint32_t w)
+{
+    memcpy(ZL_ALIGNED4(p), &w, 4);
+}
+
+/* The pair loops keep depth as y = z << 2 (exact: z < 2^30 on an exact span),
+ * so y's top half is the depth d, and both tests of a pair come straight from
+ * the stored pair w: d0 against w's low half (y0 < s0 << 16 is d0 < s0),
+ * d1 against its high half. */
+static ZL_ALWAYS_INLINE int pair_pass(unsigned func, uint32_t y0, uint32_t y1, uint32_t w)
+{
+    if (func == ZL_LESS)
+        return y0 < (w << 16) && (y1 >> 16) < (w >> 16);
+    return (y0 >> 16) <= (w & 0xFFFFu) && (y1 >> 16) <= (w >> 16);
+}
+
+/* One pixel of the pair loops, depth d. */
+static ZL_ALWAYS_INLINE void flat_pixel(unsigned func, uint16_t *c, uint16_t *zp, uint32_t d, uint16_t pixel)
+{
+    if (depth_pass(func, d, *zp)) {
+        *zp = (uint16_t)d;
+        *c = pixel;
+    }
+}
+
+/* The values of a run of pairs: depth y of its first pixel, its step dy,
+ * the colour twice, and the constant 0xFFFF0000. In a struct so that a run
+ * takes four arguments, all in registers (GCC reloads a stack argument in
+ * the loop). The mask is a value here so that GCC keeps it in a register:
+ * an `and` with it packs a depth pair in two instructions, where GCC's own
+ * choice (two shifts) takes three. */
+typedef struct {
+    uint32_t y, dy, both, hi;
+} zl_pair_run;
+
+/* One pair of a run at pixel i: 0 when a test fails (nothing written). */
+static ZL_ALWAYS_INLINE int flat_pair(unsigned func, uint16_t *cend, uint16_t *zend, int32_t i, uint32_t y,
+                                      uint32_t y1, uint32_t both, uint32_t hi)
+{
+    uint32_t w = pair_load(zend + i);
+    if (!pair_pass(func, y, y1, w))
+        return 0;
+    pair_store(zend + i, (y1 & hi) | (y >> 16));
+    pair_store(cend + i, both);
+    return 1;
+}
+
+/* Flat RGB565 on an exact span from 4-byte aligned rows, four pixels per
+ * step: per pair one depth load, two compares, one depth store and one
+ * colour store. The index i (a multiple of 4) runs up to 0 from the rows'
+ * ends, so the loop end is an add and a branch. Returns the index of the
+ * four where a test fails, 0 at the end: the loop is passing pairs alone. */
+static ZL_ALWAYS_INLINE int32_t flat_pair_run(unsigned func, uint16_t *cend, uint16_t *zend, int32_t i,
+                                              const zl_pair_run *r)
+{
+    uint32_t y = r->y, dy = r->dy, both = r->both, hi = r->hi;
+    for (; i != 0; i += 4) {
+        uint32_t y1 = y + dy, y2 = y1 + dy, y3 = y2 + dy;
+        /* On a failing test the caller redoes these four pixels one by one,
+         * which leaves a pair written here as it is (see span_flat_pairs). */
+        if (!flat_pair(func, cend, zend, i, y, y1, both, hi) || !flat_pair(func, cend, zend, i + 2, y2, y3, both, hi))
+            return i;
+        y = y3 + dy;
+    }
+    return 0;
+}
+
+/* The run once per depth function, each its own function so that the
+ * compiler keeps all of the loop's values in registers. */
+static ZL_NOINLINE int32_t flat_pair_run_less(uint16_t *cend, uint16_t *zend, int32_t i, const zl_pair_run *r)
+{
+    return flat_pair_run(ZL_LESS, cend, zend, i, r);
+}
+
+static ZL_NOINLINE int32_t flat_pair_run_lequal(uint16_t *cend, uint16_t *zend, int32_t i, const zl_pair_run *r)
+{
+    return flat_pair_run(ZL_LEQUAL, cend, zend, i, r);
+}
+
+/* 2m pixels from 4-byte aligned rows: runs of passing pairs, and between
+ * them a pair with a failing test pixel by pixel. A pair the run wrote
+ * before it failed is redone too: its test fails now for LESS (d < d) and
+ * rewrites the same values for LEQUAL, so the result is unchanged. y (the
+ * depth in the top half) is y0 + k*dy at pixel k, which modulo 2^32 is the
+ * same as stepping. */
+static inline void span_flat_pairs(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t m, uint32_t y0,
+                                   uint32_t dy, uint16_t pixel)
+{
+    uint16_t *cend = crow + 2 * m, *zend = zrow + 2 * m;
+    int32_t i = -2 * m;
+    zl_pair_run r;
+    r.dy = dy;
+    r.both = (uint32_t)pixel * 0x10001u;
+    r.hi = 0xFFFF0000u;
+    while (i != 0) {
+        uint32_t y = y0 + (uint32_t)(i + 2 * m) * dy;
+        /* The run takes pixels in fours: a lone pair first when needed. */
+        if (((uint32_t)i & 2u) == 0) {
+            r.y = y;
+            i = func == ZL_LESS ? flat_pair_run_less(cend, zend, i, &r) : flat_pair_run_lequal(cend, zend, i, &r);
+            if (i == 0)
+                break;
+            y = y0 + (uint32_t)(i + 2 * m) * dy;
+        } else if (flat_pair(func, cend, zend, i, y, y + dy, r.both, r.hi)) {
+            i += 2;
+            continue;
+        }
+        flat_pixel(func, cend + i, zend + i, y >> 16, pixel);
+        flat_pixel(func, cend + i + 1, zend + i + 1, (y + dy) >> 16, pixel);
+        i += 2;
+    }
+}
+
+/* Exact flat span: one pixel to align the rows, then pairs, then the last
+ * odd pixel, when the rows allow pairs (same alignment, little-endian);
+ * else one pixel at a time. */
+static inline void span_flat_exact(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                   uint32_t dz, uint16_t pixel)
+{
+    int32_t m;
+    if (!little_endian() || (((uintptr_t)crow ^ (uintptr_t)zrow) & 2u) != 0) {
+        span_flat_565(func, 0, crow, zrow, n, z, dz, pixel);
+        return;
+    }
+    if (((uintptr_t)zrow & 2u) != 0) {
+        flat_pixel(func, crow, zrow, z >> 14, pixel);
+        crow++;
+        zrow++;
+        n--;
+        z += dz;
+    }
+    m = n / 2;
+    span_flat_pairs(func, crow, zrow, m, z << 2, dz << 2, pixel);
+    if (n & 1)
+        flat_pixel(func, crow + n - 1, zrow + n - 1, (z + (uint32_t)(n - 1) * dz) >> 14, pixel);
+}
+
 void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                       uint32_t dz, const uint8_t *pix)
 {
@@ -57,11 +221,11 @@ void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_
         int exact = stays_below(z, dz, n, 65536u << 14);
         memcpy(&pixel, pix, 2);
         if (func == ZL_LESS && exact)
-            span_flat_565(ZL_LESS, 0, c16, zrow, n, z, dz, pixel);
+            span_flat_exact(ZL_LESS, c16, zrow, n, z, dz, pixel);
         else if (func == ZL_LESS)
             span_flat_565(ZL_LESS, 1, c16, zrow, n, z, dz, pixel);
         else if (exact)
-            span_flat_565(ZL_LEQUAL, 0, c16, zrow, n, z, dz, pixel);
+            span_flat_exact(ZL_LEQUAL, c16, zrow, n, z, dz, pixel);
         else
             span_flat_565(ZL_LEQUAL, 1, c16, zrow, n, z, dz, pixel);
         return;
@@ -101,14 +265,6 @@ static inline void span_gouraud_565(unsigned func, int swap, uint16_t *crow, uin
         g += dc[1];
         b += dc[2];
     }
-}
-
-static int little_endian(void)
-{
-    const uint16_t probe = 1;
-    uint8_t first;
-    memcpy(&first, &probe, 1);
-    return first == 1;
 }
 
 /* The Gouraud fast path applies: RGB565, every channel, LESS or LEQUAL with
