@@ -108,6 +108,11 @@ static void draw_rows(const zl_context *ctx, zl_active *t, zl_gouraud *g, zl_tex
             ;
         return;
     }
+    if (tp == NULL && !ss->gouraud) {
+        zl_tri_rows_flat(t, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride, (uint8_t *)ctx->target.depth,
+                         ctx->target.depth_stride);
+        return;
+    }
     if (tp != NULL) {
         while (zl_tri_row_ex(t, g, tp, &ctx->style, ss, color_row(&ctx->target, t->row),
                              depth_row(&ctx->target, t->row)))
@@ -149,6 +154,54 @@ static ZL_NOINLINE void draw_pieces(const zl_context *ctx, const zl_source *src,
     }
 }
 
+/* Whether every triangle of a draw is a plain flat-shaded fill: no polygon
+ * modes, offset, toon bands, texture or perspective planes. Then a triangle
+ * whose vertices are all cached inside the clip volume can skip the general
+ * polygon path (draw_cached). */
+static int plain_flat(const zl_context *ctx)
+{
+    const zl_style *sty = &ctx->style;
+    return ctx->state.shading == ZL_SHADE_FLAT && sty->polygon_front == ZL_POLY_FILL &&
+           sty->polygon_back == ZL_POLY_FILL && sty->offset_factor == 0 && sty->offset_units == 0 &&
+           sty->toon_bands == 0 && !zl_style_needs_planes(sty);
+}
+
+/*
+ * Triangle t of a plain flat draw from the vertex cache: the same record as
+ * zl_tri_polygon_geom + may_draw + zl_tri_shade + zl_tri_piece give (one
+ * piece, no offset, the lit flat colour), classified once, and culled
+ * triangles are never shaded. Returns 0 when a vertex needs clipping: then
+ * the general path draws the triangle.
+ */
+static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss)
+{
+    const uint16_t *idx = &src->mesh->indices[t * 3u];
+    zl_poly poly;
+    zl_active tri;
+    int32_t first, end;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        const zl_cached_vertex *c = &src->cache[idx[k]];
+        if (c->x == ZL_CACHE_INVALID)
+            return 1; /* dropped, as zl_tri_polygon_geom drops it */
+        if (c->x == ZL_CACHE_COMPLEX)
+            return 0;
+        poly.v[k].x = c->x;
+        poly.v[k].y = c->y;
+        poly.v[k].z = c->z;
+        poly.v[k].r = 0; /* vertex colours only matter to Gouraud shading */
+        poly.v[k].g = 0;
+        poly.v[k].b = 0;
+    }
+    poly.n = 3;
+    if (!zl_tri_classify(&poly.v[0], &poly.v[1], &poly.v[2], &ctx->state, src->width, src->height, &first, &end))
+        return 1;
+    zl_tri_shade(src, t, &poly);
+    zl_tri_setup_rows(&tri, NULL, NULL, NULL, &poly.v[0], &poly.v[1], &poly.v[2], &poly, &ctx->state, first, end);
+    draw_rows(ctx, &tri, NULL, NULL, ss);
+    return 1;
+}
+
 /* The checks every draw call starts with: context, target, state, style. */
 static zl_status check_context(const zl_context *ctx)
 {
@@ -180,7 +233,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
-    int planes;
+    int planes, plain;
     st = check_context(ctx);
     if (st == ZL_OK)
         st = zl_check_geometry(mesh, mvp);
@@ -200,9 +253,12 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
+    plain = src.cache != NULL && plain_flat(ctx);
     for (t = 0; t < mesh->triangle_count; t++) {
         zl_tpoly tpoly; /* the texture attributes are only filled when the style needs them */
         zl_poly *poly = &tpoly.p;
+        if (plain && draw_cached(ctx, &src, t, &ss))
+            continue;
         if (!(planes ? zl_tri_polygon_tex(&src, &ctx->style, t, &tpoly)
                      : zl_tri_polygon_geom(&src, &ctx->style, t, poly)) ||
             !may_draw(&src, &ctx->style, poly))

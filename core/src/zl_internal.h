@@ -99,6 +99,7 @@ typedef struct {
 struct zl_active {
     zl_edge left, right;   /* edges bounding the current rows */
     zl_edge lower;         /* replaces the short edge from row `mid` on */
+    uint32_t dz14;         /* z.dx as the 32-bit Q14 span stepper (in the padding before z) */
     zl_attr z;
     int32_t ax;            /* anchor column of the attribute planes */
     uint32_t zlo, zhi;     /* vertex depth range, Q16 (same scale as zl_wvert.z) */
@@ -141,6 +142,59 @@ typedef struct {
     uint16_t width;
 } zl_span_state;
 
+/* floor(v / 2^shift) in 32 bits (an arithmetic shift where >> is one). */
+static inline int32_t zl_floor_shift32(int32_t v, unsigned shift)
+{
+#if ((-1) >> 1) == -1
+    return v >> shift;
+#else
+    int32_t d = (int32_t)1 << shift, q = v / d;
+    return (v % d) < 0 ? q - 1 : q;
+#endif
+}
+
+/*
+ * Division by a divisor fixed for a whole triangle (Moller and Granlund,
+ * "Improved division by invariant integers", IEEE TC 2011, algorithm 4):
+ * one 64-by-32 division makes a reciprocal, then every quotient is a
+ * multiply-add and two rarely taken corrections, where zl_udiv64_32 costs
+ * two divisions and normalisation each time.
+ */
+typedef struct {
+    uint32_t d;     /* the divisor shifted left until its top bit is set */
+    uint32_t v;     /* floor((2^64 - 1) / d) - 2^32 */
+    unsigned shift; /* that shift */
+} zl_div_inv;
+
+static inline void zl_div_inv_init(zl_div_inv *di, uint32_t c) /* c != 0 */
+{
+    unsigned s = 0;
+#if defined(__GNUC__)
+    s = (unsigned)__builtin_clz(c);
+#else
+    while ((c << s & 0x80000000u) == 0)
+        s++;
+#endif
+    di->d = c << s;
+    di->shift = s;
+    /* (2^64 - 1) - d 2^32 has a high word below d: the precondition. */
+    di->v = zl_udiv64_32(~(uint64_t)0 - ((uint64_t)di->d << 32), di->d, NULL);
+}
+
+/* floor(n / c) for n < c 2^32 (so n << shift fits 64 bits). */
+static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
+{
+    uint64_t u = n << di->shift, q = (uint64_t)di->v * (uint32_t)(u >> 32) + u; /* modulo 2^64 */
+    uint32_t q1 = (uint32_t)(q >> 32) + 1u, r = (uint32_t)u - q1 * di->d;
+    if (r > (uint32_t)q) {
+        q1--;
+        r += di->d;
+    }
+    if (r >= di->d)
+        q1++;
+    return q1;
+}
+
 #define ZL_LIST_END 0xFFFFu
 
 /* Keep a function out of its caller, so a big local (a polygon) of one
@@ -170,6 +224,13 @@ unsigned zl_outcode(const zl_source *s, const zl_cvert *v);
 void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out);
 /* Project one mesh vertex into a cache entry (scanline mode). */
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx);
+/* cache[v] = zl_cache_vertex(s, v) for v = first .. first + count - 1 (within
+ * the mesh), with the per-draw work done once. Returns ZL_ERR_RANGE when one
+ * of them is ZL_CACHE_INVALID, or when the matrix has an entry outside
+ * +-16384.0 (then all are), else ZL_OK. Over all vertices (first 0, count
+ * vertex_count) that is exactly zl_check_positions(positions, vertex_count,
+ * mvp) for non-NULL positions. Every entry is written either way. */
+zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_t first, uint16_t count);
 /* The window-space polygon of triangle t; 0 if nothing of it is left. */
 int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out);
 /* The same with a style: texture coordinates and w carried to the polygon
@@ -198,6 +259,11 @@ int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert 
 int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
                     const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st,
                     uint16_t width, uint16_t height);
+/* zl_tri_setup_ex for a triangle zl_tri_classify accepted with rows
+ * [first, end): the same record, without classifying it again. */
+void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                       const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st, int32_t first,
+                       int32_t end);
 /* zl_tri_row for a triangle set up by zl_tri_setup_ex with the same style. */
 int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_span_state *ss,
                   uint8_t *color_row, uint16_t *depth_row);
@@ -205,6 +271,10 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
 int zl_style_needs_planes(const zl_style *sty);
 /* Fill the span of row t->row into the given row buffers, then step t to the
  * next row. Returns 0 when the triangle has no rows left. */
+/* All rows of a flat triangle (frame mode, whole target): zl_tri_row's
+ * pixels without its per-row record updates. */
+void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
+                      uint8_t *depth, int32_t depth_stride);
 int zl_tri_row(zl_active *t, zl_gouraud *g, const zl_span_state *ss, uint8_t *color_row,
                uint16_t *depth_row);
 /* Span writer settings for a state and a target format (bpp 0 = no colour). */

@@ -24,7 +24,8 @@
  * the index of the first row (or column) whose centre is at or after v. */
 static int32_t first_centre_at_or_after(int32_t v)
 {
-    return (int32_t)zl_floor_shift64((int64_t)v - ZL_SUB_HALF + ZL_SUB_ONE - 1, ZL_SUB_BITS);
+    /* Window coordinates stay below 2^23 (zl_config.h): 32 bits suffice. */
+    return zl_floor_shift32(v - ZL_SUB_HALF + ZL_SUB_ONE - 1, ZL_SUB_BITS);
 }
 
 static int64_t signed_area2(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c)
@@ -72,20 +73,33 @@ int zl_tri_classify(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, con
     return 1;
 }
 
-/* Start edge top -> bot (top->y < bot->y) at row j. */
+/* Start edge top -> bot (top->y < bot->y) at row j. Window coordinates stay
+ * below 2^23, so dx, dy, 16 dy and 16 dx fit 32 bits; only N needs 64. When
+ * N fits 32 bits too (every edge of an on-screen triangle), the quotients
+ * are 32-bit divisions and the remainders, which lie in [0, 16 dy), are
+ * exact in wrapping 32-bit arithmetic. */
 static void edge_init(zl_edge *e, const zl_wvert *top, const zl_wvert *bot, int32_t j)
 {
-    int64_t dy = (int64_t)bot->y - top->y, dx = (int64_t)bot->x - top->x;
-    int64_t d = dy * ZL_SUB_ONE;
-    int64_t n = ((int64_t)top->x - ZL_SUB_HALF) * dy +
-                ((int64_t)j * ZL_SUB_ONE + ZL_SUB_HALF - top->y) * dx;
-    int64_t q = zl_ceil_div64(n, d);
-    int64_t step = zl_floor_div64(dx * ZL_SUB_ONE, d);
-    e->x = (int32_t)q;
-    e->rem = (int32_t)(q * d - n);
-    e->den = (int32_t)d;
-    e->step = (int32_t)step;
-    e->rstep = (int32_t)(dx * ZL_SUB_ONE - step * d);
+    int32_t dy = bot->y - top->y, dx = bot->x - top->x;
+    int32_t d = dy * ZL_SUB_ONE, dx16 = dx * ZL_SUB_ONE;
+    int64_t n = (int64_t)(top->x - ZL_SUB_HALF) * dy + (int64_t)(j * ZL_SUB_ONE + ZL_SUB_HALF - top->y) * dx;
+    int32_t q, step;
+    if (n > INT32_MIN && n <= INT32_MAX) {
+        int32_t n32 = (int32_t)n;
+        q = n32 / d;
+        if (n32 % d > 0) /* ceil */
+            q += 1;
+    } else {
+        q = (int32_t)zl_ceil_div64(n, d);
+    }
+    step = dx16 / d;
+    if (dx16 % d < 0) /* floor */
+        step -= 1;
+    e->x = q;
+    e->rem = (int32_t)((uint32_t)q * (uint32_t)d - (uint32_t)(uint64_t)n);
+    e->den = d;
+    e->step = step;
+    e->rstep = (int32_t)((uint32_t)dx16 - (uint32_t)step * (uint32_t)d);
 }
 
 static void edge_step(zl_edge *e)
@@ -105,20 +119,34 @@ static int64_t clamp64(int64_t v, int64_t lo, int64_t hi)
 
 /* round(s * 2^sh / c), c > 0, split into quotient and remainder so that no
  * intermediate exceeds 64 bits; saturates at +-limit. */
-static int64_t muldiv_pow2(int64_t s, unsigned sh, int64_t c, int64_t limit)
+static int64_t muldiv_pow2_slow(int64_t s, unsigned sh, int64_t c, int64_t limit)
 {
-    int64_t q, r;
-    if (s >= INT32_MIN && s <= INT32_MAX && c <= INT32_MAX) {
-        /* 32-bit division when it fits: same truncated quotient, far cheaper on Cortex-M */
-        q = (int32_t)s / (int32_t)c;
-        r = (int32_t)s % (int32_t)c;
-    } else {
-        q = s / c;
-        r = s % c;
-    }
+    int64_t q = s / c, r = s % c;
     if (q > (limit >> sh) || q < -(limit >> sh))
         return q > 0 ? limit : -limit;
     return clamp64(q * ((int64_t)1 << sh) + zl_round_div64(r * ((int64_t)1 << sh), c), -limit, limit);
+}
+
+/*
+ * The same value, fast when the quotient fits 32 bits (every plane of an
+ * ordinary triangle): one 64-by-32 division of |s| 2^sh, by the reciprocal
+ * `inv` of c when the caller has one. round(x / c) is floor((x + h) / c)
+ * with h = floor(c / 2); for x = -m < 0 that is -floor((m - h + c - 1) / c).
+ * A quotient below 2^32 is far inside +-limit.
+ */
+static int64_t muldiv_pow2(int64_t s, unsigned sh, int64_t c, int64_t limit, const zl_div_inv *inv)
+{
+    uint64_t m, num;
+    uint32_t c32, q;
+    if (c > UINT32_MAX || s > (INT64_MAX >> (sh + 1)) || s < -(INT64_MAX >> (sh + 1)))
+        return muldiv_pow2_slow(s, sh, c, limit);
+    c32 = (uint32_t)c;
+    m = (uint64_t)(s < 0 ? -s : s) << sh;
+    num = s < 0 ? m - c32 / 2u + c32 - 1u : m + c32 / 2u;
+    if ((num >> 32) >= c32)
+        return muldiv_pow2_slow(s, sh, c, limit);
+    q = inv != NULL ? zl_div_inv_q(inv, num) : zl_udiv64_32(num, c32, NULL);
+    return s < 0 ? -(int64_t)q : (int64_t)q;
 }
 
 typedef struct {
@@ -126,6 +154,7 @@ typedef struct {
     int32_t ax, ay;                /* anchor pixel */
     int64_t ox, oy;                /* anchor centre minus v0, subpixels */
     int32_t first;
+    const zl_div_inv *inv;            /* reciprocal of |c|, or NULL when |c| >= 2^32 */
 } plane_frame;
 
 /* Attribute plane through values a0, a1, a2 (Q16) at the sorted vertices. */
@@ -143,12 +172,20 @@ static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t 
         ga = -ga;
         gb = -gb;
     }
-    at->dx = muldiv_pow2(ga, sh, c, ZL_GRAD_LIMIT);
-    at->dy = muldiv_pow2(gb, sh, c, ZL_GRAD_LIMIT);
+    at->dx = muldiv_pow2(ga, sh, c, ZL_GRAD_LIMIT, pf->inv);
+    at->dy = muldiv_pow2(gb, sh, c, ZL_GRAD_LIMIT, pf->inv);
     /* Value at the anchor pixel's centre, less than half a pixel from v0. */
     base = a0 * (1 << (ZL_ATTR_FRAC - 16)) +
-           muldiv_pow2(ga * pf->ox + gb * pf->oy, ZL_ATTR_FRAC - 16, c, (int64_t)1 << 44);
+           muldiv_pow2(ga * pf->ox + gb * pf->oy, ZL_ATTR_FRAC - 16, c, (int64_t)1 << 44, pf->inv);
     at->row = base + (int64_t)(pf->first - pf->ay) * at->dy;
+}
+
+/* Per-pixel step of a Q20 gradient as a 32-bit stepper of `frac` bits.
+ * Only spans of 2+ pixels step, and there the gradient is bounded by the
+ * value range, so the clamp never bites where it matters. */
+static uint32_t step32(int64_t d, unsigned shift)
+{
+    return (uint32_t)(int32_t)clamp64(zl_floor_shift64(d, shift), -((int64_t)1 << 30), (int64_t)1 << 30);
 }
 
 static void sort3(const zl_wvert **v)
@@ -233,14 +270,24 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
                     const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st,
                     uint16_t width, uint16_t height)
 {
-    const zl_wvert *v[3];
-    int32_t first, end, mid;
-    int64_t cross;
-    plane_frame pf;
-    zl_edge upper;
-    int long_left, k;
+    int32_t first, end;
     if (!zl_tri_classify(a, b, c, st, width, height, &first, &end))
         return 0;
+    zl_tri_setup_rows(t, g, tp, sty, a, b, c, poly, st, first, end);
+    return 1;
+}
+
+void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                       const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st, int32_t first,
+                       int32_t end)
+{
+    const zl_wvert *v[3];
+    int32_t mid;
+    int64_t cross;
+    plane_frame pf;
+    zl_div_inv inv;
+    zl_edge upper;
+    int long_left, k;
     v[0] = a;
     v[1] = b;
     v[2] = c;
@@ -278,6 +325,11 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
     pf.dx2 = (int64_t)v[2]->x - v[0]->x;
     pf.dy2 = (int64_t)v[2]->y - v[0]->y;
     pf.c = cross;
+    pf.inv = NULL;
+    if (cross != 0 && cross >= -(int64_t)UINT32_MAX && cross <= (int64_t)UINT32_MAX) {
+        zl_div_inv_init(&inv, (uint32_t)(cross < 0 ? -cross : cross));
+        pf.inv = &inv;
+    }
     pf.ax = (int32_t)zl_floor_shift64(v[0]->x, ZL_SUB_BITS);
     pf.ay = (int32_t)zl_floor_shift64(v[0]->y, ZL_SUB_BITS);
     pf.ox = (int64_t)pf.ax * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->x;
@@ -285,6 +337,7 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
     pf.first = first;
     t->ax = pf.ax;
     plane_setup(&t->z, &pf, v[0]->z, v[1]->z, v[2]->z);
+    t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
     t->zlo = v[0]->z;
     t->zhi = v[0]->z;
     for (k = 1; k < 3; k++) {
@@ -305,15 +358,6 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
     t->light = poly->light;
     if (tp != NULL && zl_style_needs_planes(sty))
         tex_setup(tp, g, sty, v, poly, &pf, st);
-    return 1;
-}
-
-/* Per-pixel step of a Q20 gradient as a 32-bit stepper of `frac` bits.
- * Only spans of 2+ pixels step, and there the gradient is bounded by the
- * value range, so the clamp never bites where it matters. */
-static uint32_t step32(int64_t d, unsigned shift)
-{
-    return (uint32_t)(int32_t)clamp64(zl_floor_shift64(d, shift), -((int64_t)1 << 30), (int64_t)1 << 30);
 }
 
 /* Start value at column x of a Q20 attribute, clamped to [lo, hi]. */
@@ -322,11 +366,25 @@ static int64_t attr_at(const zl_attr *a, int32_t x, int32_t ax, int64_t lo, int6
     return clamp64(a->row + (int64_t)(x - ax) * a->dx, lo, hi);
 }
 
+/* The depth stepper (Q14, rounding half added) at column x of the current
+ * row: the Q20 plane clamped to the vertex range. Once per row, so the
+ * common case (a gradient within 32 bits) is one 32x32->64 multiply. */
+static ZL_ALWAYS_INLINE uint32_t depth_start(const zl_active *t, int64_t zrow, int32_t x)
+{
+    const int64_t lo = (int64_t)t->zlo << (ZL_ATTR_FRAC - 16), hi = (int64_t)t->zhi << (ZL_ATTR_FRAC - 16);
+    int64_t v;
+    if (t->z.dx >= INT32_MIN && t->z.dx <= INT32_MAX)
+        v = zrow + (int64_t)(int32_t)t->z.dx * (x - t->ax);
+    else
+        v = zrow + (int64_t)(x - t->ax) * t->z.dx;
+    v = v < lo ? lo : (v > hi ? hi : v);
+    return (uint32_t)((uint64_t)v >> (ZL_ATTR_FRAC - 14)) + (1u << 13);
+}
+
 static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_state *ss, uint8_t *crow,
                      uint16_t *zrow)
 {
     int32_t x0 = t->left.x, x1 = t->right.x;
-    const int64_t f16 = 1 << (ZL_ATTR_FRAC - 16);
     uint32_t z, dz;
     if (x0 < 0)
         x0 = 0;
@@ -334,10 +392,8 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
         x1 = ss->width;
     if (x0 >= x1)
         return;
-    /* Depth as Q14 in 32 bits, with the rounding half folded in. */
-    z = (uint32_t)zl_floor_shift64(attr_at(&t->z, x0, t->ax, (int64_t)t->zlo * f16, (int64_t)t->zhi * f16),
-                                   ZL_ATTR_FRAC - 14) + (1u << 13);
-    dz = step32(t->z.dx, ZL_ATTR_FRAC - 14);
+    z = depth_start(t, t->z.row, x0);
+    dz = t->dz14;
     crow = crow ? crow + (size_t)x0 * ss->bpp : NULL;
     zrow = zrow ? zrow + x0 : NULL;
     /* A NULL row is an absent buffer, for which zl_span_state_init chose
@@ -359,6 +415,52 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
         uint8_t pix[3] = {0, 0, 0};
         pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
         zl_span_flat(ss, crow, zrow, x1 - x0, z, dz, pix);
+    }
+}
+
+/*
+ * Every row of a flat-shaded triangle into a whole target (frame mode): the
+ * same spans as zl_tri_row row by row, with the edges and the depth row in
+ * locals, so a row costs its span and two edge steps. The record is left
+ * as set up. Rows are color_stride / depth_stride bytes apart; a NULL
+ * buffer is one the span state does not write (zl_span_state_init).
+ */
+void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
+                      uint8_t *depth, int32_t depth_stride)
+{
+    zl_edge left = t->left, right = t->right;
+    int64_t zrow = t->z.row;
+    int32_t row = t->row, width = ss->width;
+    unsigned bpp = ss->bpp;
+    uint8_t pix[3] = {0, 0, 0};
+    if ((color == NULL && bpp != 0) || (depth == NULL && (ss->zwrite || ss->func != ZL_ALWAYS)))
+        return; /* as in row_span */
+    pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
+    if (color != NULL)
+        color += (size_t)row * (size_t)color_stride;
+    if (depth != NULL)
+        depth += (size_t)row * (size_t)depth_stride;
+    for (;;) {
+        int32_t x0 = left.x < 0 ? 0 : left.x, x1 = right.x > width ? width : right.x;
+        if (x0 < x1)
+            zl_span_flat(ss, color != NULL ? color + (size_t)x0 * bpp : NULL,
+                         depth != NULL ? (uint16_t *)(void *)depth + x0 : NULL, x1 - x0, depth_start(t, zrow, x0),
+                         t->dz14, pix);
+        if (++row >= t->end)
+            return;
+        edge_step(&left);
+        edge_step(&right);
+        zrow += t->z.dy;
+        if (color != NULL)
+            color += color_stride;
+        if (depth != NULL)
+            depth += depth_stride;
+        if (row == t->mid) {
+            if (t->lower_is_left)
+                left = t->lower;
+            else
+                right = t->lower;
+        }
     }
 }
 
@@ -652,8 +754,8 @@ int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, c
             cr = -cr;
         ga = ga < 0 ? -ga : ga;
         gb = gb < 0 ? -gb : gb;
-        mx = muldiv_pow2(ga, sh, cr, limit);
-        my = muldiv_pow2(gb, sh, cr, limit);
+        mx = muldiv_pow2(ga, sh, cr, limit, NULL);
+        my = muldiv_pow2(gb, sh, cr, limit, NULL);
         m = mx > my ? mx : my;
         /* |factor| <= 2^24 and m <= 2^36: the product fits 64 bits. */
         off += zl_floor_shift64((int64_t)sty->offset_factor * m, 16);

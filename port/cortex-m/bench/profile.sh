@@ -9,7 +9,8 @@
 # prints a markdown table per firmware: the TOP functions by instructions
 # executed inside that frame.
 #
-#   port/cortex-m/bench/profile.sh [BUILD_DIR]      (env: SCENE=bunny TOP=20)
+#   port/cortex-m/bench/profile.sh [BUILD_DIR]  (env: SCENE=bunny TOP=20 KEY=total; KEY=total_vcache
+#   profiles the frame-mode frame drawn through the vertex cache)
 #
 # BUILD_DIR defaults to build/cortex-m4-profile. Check: the profile's total is
 # the plugin's count between the two marks, which includes mark()'s own
@@ -22,6 +23,7 @@ cd "$(dirname "$0")/../../.."
 build=${1:-build/cortex-m4-profile}
 scene=${SCENE:-bunny}
 top=${TOP:-20}
+key=${KEY:-total}
 bench=$build/port/cortex-m/bench
 out=$build/profile
 mkdir -p "$out"
@@ -46,9 +48,9 @@ for tag in frame-O2 scanline-O2; do
         -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6
     # first run: the mark numbers of the scene's frame (runs are deterministic)
     "$@" -kernel "$elf" >"$out/$tag.pass1.txt" || true
-    iv=$(awk -v s="$scene" '$1 == "INTERVAL" && $3 == s && $4 == "total" { print $6, $7; exit }' "$out/$tag.pass1.txt")
+    iv=$(awk -v s="$scene" -v key="$key" '$1 == "INTERVAL" && $3 == s && $4 == key { print $6, $7; exit }' "$out/$tag.pass1.txt")
     if [ -z "$iv" ]; then
-        echo "profile.sh: no interval '$scene total' in $out/$tag.pass1.txt" >&2
+        echo "profile.sh: no interval '$scene $key' in $out/$tag.pass1.txt" >&2
         exit 1
     fi
     from=${iv% *}; to=${iv#* }
@@ -114,7 +116,7 @@ for tag in frame-O2 scanline-O2; do
         }' 2>"$out/$tag.total" | sort -t "$tab" -k3,3nr >"$out/$tag.functions"
 
     # checks: the profile against the plugin marks and against the timer
-    T=$(awk -v s="$scene" '$1 == "INTERVAL" && $3 == s && $4 == "total" { print $5; exit }' "$out/$tag.txt")
+    T=$(awk -v s="$scene" -v key="$key" '$1 == "INTERVAL" && $3 == s && $4 == key { print $5; exit }' "$out/$tag.txt")
     ov=$(awk '/^# timer:/ { for (i = 1; i <= NF; i++) if ($i == "overhead") print $(i + 1) }' "$out/$tag.txt")
     P=$(awk '{ print $3 }' "$out/$tag.total")
     Pfile=$(awk '{ print $4 }' "$out/$tag.total")
