@@ -306,7 +306,7 @@ static uint16_t *key_at(const plan_pass *p, uint32_t k)
 }
 
 /* Record visible primitive id with row range [first, end) and its pieces. */
-static void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
 {
     if (p->diff == NULL) {
         f->visible[f->row_start[first]++] = (uint16_t)id;
@@ -417,18 +417,34 @@ static uint32_t classify_pass(zl_frame *f, plan_pass *p)
  * cycle at a time. row_start holds the bucket starts and ends at the ends. */
 static void place_by_keys(zl_frame *f, const plan_pass *p, uint32_t n)
 {
+    uint16_t *row_start = f->row_start, *visible = f->visible;
     uint32_t k;
+    if (n <= p->na) { /* all keys in the first region (the usual case) */
+        uint16_t *key = p->key_a;
+        for (k = 0; k < n; k++)
+            key[k] = row_start[key[k]]++;
+        for (k = 0; k < n; k++) {
+            while (key[k] != k) {
+                uint16_t j = key[k], id = visible[k];
+                visible[k] = visible[j];
+                visible[j] = id;
+                key[k] = key[j];
+                key[j] = j;
+            }
+        }
+        return;
+    }
     for (k = 0; k < n; k++) {
         uint16_t *key = key_at(p, k);
-        *key = f->row_start[*key]++;
+        *key = row_start[*key]++;
     }
     for (k = 0; k < n; k++) {
         uint16_t *key = key_at(p, k);
         while (*key != k) {
-            uint16_t j = *key, id = f->visible[k];
+            uint16_t j = *key, id = visible[k];
             uint16_t *kj = key_at(p, j);
-            f->visible[k] = f->visible[j];
-            f->visible[j] = id;
+            visible[k] = visible[j];
+            visible[j] = id;
             *key = *kj;
             *kj = j;
         }
@@ -504,36 +520,36 @@ static zl_texplanes *tex_of(const zl_frame *f, uint16_t slot)
     return f->tex ? (zl_texplanes *)(void *)(f->tex + (size_t)slot * sizeof(zl_texplanes)) : NULL;
 }
 
-/* Set up the pieces of triangle `id` and insert them after *link, keeping
- * the list sorted; returns the link to insert the next id after. */
-static ZL_NOINLINE uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
+/* Set up the pieces of triangle `id` and insert them, in order, at *link
+ * (where the render walk of the active list has reached the first record
+ * with a greater id). */
+static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
 {
     uint8_t mi = mesh_of_id(f, id);
     const zl_frame_mesh *m = &f->meshes[mi];
     const zl_style *sty = style_of(f, mi);
     int lines = sty != NULL && ext_of(f, mi)->is_lines;
+    uint32_t t = id - m->tri_base;
     zl_source s;
     zl_tpoly tpoly; /* texture attributes only when the style needs them */
     zl_poly *poly = &tpoly.p;
     unsigned k, n = 1;
     source_of(f, m, &s);
     if (!lines) {
-        if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, id - m->tri_base, &tpoly)
-                                         : zl_tri_polygon_geom(&s, sty, id - m->tri_base, poly)))
-            return link;
-        zl_tri_shade(&s, id - m->tri_base, poly);
-        n = zl_tri_pieces(&s, sty, id - m->tri_base, poly);
+        if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
+                                         : zl_tri_polygon_geom(&s, sty, t, poly)))
+            return;
+        zl_tri_shade(&s, t, poly);
+        n = zl_tri_pieces(&s, sty, t, poly);
     }
-    while (*link != ZL_LIST_END && f->pool[*link].id < id)
-        link = &f->pool[*link].next;
     for (k = 0; k < n; k++) {
         uint16_t slot = f->free_head;
         zl_active *a;
         if (slot == ZL_LIST_END)
             break; /* cannot happen: planning bounded the peak */
         a = &f->pool[slot];
-        if (lines ? !prim_record(f, mi, &s, id - m->tri_base, a)
-                  : !zl_tri_piece(&s, sty, id - m->tri_base, poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
+        if (lines ? !prim_record(f, mi, &s, t, a)
+                  : !zl_tri_piece(&s, sty, t, poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
             continue;
         f->free_head = a->next;
         a->id = id;
@@ -542,40 +558,125 @@ static ZL_NOINLINE uint16_t *activate(zl_frame *f, uint16_t id, uint16_t *link)
         *link = slot;
         link = &a->next;
     }
-    return link;
 }
 
-static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+/* Return the record at *link, which has no rows left, to the free list. */
+static void retire(zl_frame *f, uint16_t *link, zl_active *a, uint16_t slot)
 {
-    uint16_t begin = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y], i;
+    *link = a->next;
+    a->next = f->free_head;
+    f->free_head = slot;
+}
+
+/* Row y: one walk of the active list (sorted by id) fills every record's
+ * span in id order; the triangles starting on this row (visible[i .. end))
+ * are set up and inserted as the walk passes their place, so they need no
+ * walk of their own. Setting up writes no pixel, so the order of the spans,
+ * and hence every pixel, is as if all were activated first; a finished
+ * record is freed before later ones are set up, which only lowers the peak. */
+static ZL_NOINLINE void render_row_styled(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                          uint16_t *zrow)
+{
     uint16_t *link = &f->active_head;
-    for (i = begin; i < end; i++)
-        link = activate(f, f->visible[i], link);
-    link = &f->active_head;
-    while (*link != ZL_LIST_END) {
+    for (;;) {
         uint16_t slot = *link;
-        zl_active *a = &f->pool[slot];
+        zl_active *a;
+        const zl_style *sty;
+        const zl_span_state *ss;
+        int more;
+        if (i < end && (slot == ZL_LIST_END || f->pool[slot].id > f->visible[i])) {
+            activate(f, f->visible[i++], link);
+            continue;
+        }
+        if (slot == ZL_LIST_END)
+            break;
+        a = &f->pool[slot];
         if (a->row != y) { /* a later piece of a clipped triangle: not started */
             link = &a->next;
             continue;
         }
-        const zl_style *sty = style_of(f, a->mesh);
-        const zl_span_state *ss = &f->meshes[a->mesh].span;
-        int more;
+        sty = style_of(f, a->mesh);
+        ss = &f->meshes[a->mesh].span;
         if (a->kind != ZL_KIND_TRI)
             more = zl_prim_row(a, ss, crow, zrow);
-        else if (zl_style_needs_planes(sty))
+        else if (f->tex != NULL && zl_style_needs_planes(sty))
             more = zl_tri_row_ex(a, gouraud_of(f, slot), tex_of(f, slot), sty, ss, crow, zrow);
         else
             more = zl_tri_row(a, gouraud_of(f, slot), ss, crow, zrow);
-        if (more) {
+        if (more)
             link = &a->next;
-        } else {
-            *link = a->next;
-            a->next = f->free_head;
-            f->free_head = slot;
-        }
+        else
+            retire(f, link, a, slot);
     }
+}
+
+/* activate() without style records: a filled triangle, no texture planes. */
+static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
+{
+    uint8_t mi = mesh_of_id(f, id);
+    const zl_frame_mesh *m = &f->meshes[mi];
+    uint32_t t = id - m->tri_base;
+    zl_source s;
+    zl_poly poly;
+    unsigned k, n;
+    source_of(f, m, &s);
+    if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
+        return;
+    zl_tri_shade(&s, t, &poly);
+    n = zl_tri_pieces(&s, NULL, t, &poly);
+    for (k = 0; k < n; k++) {
+        uint16_t slot = f->free_head;
+        zl_active *a;
+        if (slot == ZL_LIST_END)
+            break; /* cannot happen: planning bounded the peak */
+        a = &f->pool[slot];
+        if (!zl_tri_piece(&s, NULL, t, &poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
+            continue;
+        f->free_head = a->next;
+        a->id = id;
+        a->mesh = mi;
+        a->next = *link;
+        *link = slot;
+        link = &a->next;
+    }
+}
+
+/* render_row_styled() without style records: every record is a filled
+ * triangle without texture planes (add_record refuses anything else). */
+static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                         uint16_t *zrow)
+{
+    uint16_t *link = &f->active_head;
+    zl_active *pool = f->pool;
+    const uint16_t *visible = f->visible;
+    const zl_frame_mesh *meshes = f->meshes;
+    zl_gouraud *gouraud = (zl_gouraud *)(void *)f->gouraud;
+    for (;;) {
+        uint16_t slot = *link;
+        zl_active *a;
+        if (i < end && (slot == ZL_LIST_END || pool[slot].id > visible[i])) {
+            activate_plain(f, visible[i++], link);
+            continue;
+        }
+        if (slot == ZL_LIST_END)
+            break;
+        a = &pool[slot];
+        /* a->row != y: a later piece of a clipped triangle, not started */
+        if (a->row == y &&
+            !zl_tri_row(a, gouraud != NULL ? gouraud + slot : NULL, &meshes[a->mesh].span, crow, zrow))
+            retire(f, link, a, slot);
+        else
+            link = &a->next;
+    }
+}
+
+static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+{
+    uint16_t i = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y];
+    if (f->ext != NULL)
+        render_row_styled(f, y, i, end, crow, zrow);
+    else
+        render_row_plain(f, y, i, end, crow, zrow);
 }
 
 zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
