@@ -3,16 +3,22 @@
  *
  * Planning (first zl_frame_next_band):
  *   1. every vertex is transformed once into the vertex cache;
- *   2. every triangle is classified (culling, clipping, row range) and its
- *      first row counted; a difference array over rows bounds how many
+ *   2. every triangle is classified once (culling, clipping, row range) and
+ *      its first row counted; a difference array over rows bounds how many
  *      triangles are active at once, so capacity errors come before any pixel;
- *   3. a counting sort buckets the visible triangle ids by first row (the
- *      edge table), in submission order within a bucket.
- * Per row: the bucket's triangles are set up and merged into the active list,
- * which stays sorted by id so every pixel sees triangles in submission order
- * (as frame mode does); each active triangle fills its span of the row and
- * steps to the next; a triangle leaves after its last row. Work per row is
- * proportional to the active triangles only.
+ *      the visible ids go to visible[] in id order and their first rows to
+ *      work-buffer regions that are idle until the first row (pool, Gouraud
+ *      and texture records, depth and colour bands);
+ *   3. a stable counting sort, in place, buckets the visible ids by first row
+ *      (the edge table), in submission order within a bucket. Only when the
+ *      first rows did not fit in the idle regions are the triangles
+ *      classified a second time to place them.
+ * Per row: one walk of the active list, which stays sorted by id so every
+ * pixel sees triangles in submission order (as frame mode does), fills each
+ * active triangle's span of the row and steps it to the next; the bucket's
+ * triangles are set up and inserted as the walk passes their place; a
+ * triangle leaves after its last row. Work per row is proportional to the
+ * active triangles only.
  */
 #include <string.h>
 
