@@ -1,10 +1,12 @@
 /*
  * Fast exact division (zl_udiv64_32) against the plain 64-bit C division, on
  * edge cases and on many pseudo-random operands from a fixed-seed generator
- * (the same sequence on the host and on every Cortex-M).
+ * (the same sequence on the host and on every Cortex-M). Then the vertex
+ * cache (zl_cache_vertex, zl_cache_vertices) and zl_project, whose fast
+ * paths use it, against the straightforward 64-bit formulas written out here.
  */
+#include "../core/src/zl_internal.h"
 #include "unity.h"
-#include "zline/zline.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -101,11 +103,501 @@ static void test_udiv_random_numerators(void)
     }
 }
 
+
+/* ------------------------------------------------ the vertex cache */
+
+#define NV 24
+#define LIM ((int64_t)1 << 30)
+
+static int64_t floor_div(int64_t n, int64_t d) /* d > 0 */
+{
+    int64_t q = n / d;
+    if (n % d < 0)
+        q--;
+    return q;
+}
+
+/* zl_round_div64's definition, floor((2n + d) / 2d); |n| below 2^62. */
+static int64_t round_div(int64_t n, int64_t d)
+{
+    return floor_div(2 * n + d, 2 * d);
+}
+
+/* Transform, rounded; 0 when an operand or the result leaves its range. */
+static int ref_transform(const zl_fixed *m, const zl_fixed *p, int32_t *c)
+{
+    int r, k;
+    for (k = 0; k < 3; k++)
+        if (p[k] < -LIM || p[k] > LIM)
+            return 0;
+    for (k = 0; k < 16; k++)
+        if (m[k] < -LIM || m[k] > LIM)
+            return 0;
+    for (r = 0; r < 4; r++) {
+        int64_t a = (int64_t)m[r * 4] * p[0] + (int64_t)m[r * 4 + 1] * p[1] + (int64_t)m[r * 4 + 2] * p[2] +
+                    (int64_t)m[r * 4 + 3] * 65536;
+        a = floor_div(a + 32768, 65536);
+        if (a < INT32_MIN || a > INT32_MAX)
+            return 0;
+        c[r] = (int32_t)a;
+    }
+    return 1;
+}
+
+/* Inside the 7 clip planes, each written out as in the documentation. */
+static int ref_inside(const int32_t *c, int64_t wd, int64_t ht)
+{
+    const int64_t g = ZL_GUARD_PX, x = c[0], y = c[1], z = c[2], w = c[3];
+    return w - 1 >= 0 && z >= 0 && w - z >= 0 && wd * x + (wd + 2 * g) * w >= 0 &&
+           -wd * x + (wd + 2 * g) * w >= 0 && -ht * y + (ht + 2 * g) * w >= 0 && ht * y + (ht + 2 * g) * w >= 0;
+}
+
+static zl_cached_vertex ref_cache(const zl_fixed *m, const zl_fixed *p, int64_t wd, int64_t ht)
+{
+    zl_cached_vertex r = {ZL_CACHE_INVALID, 0, 0};
+    int32_t c[4];
+    int64_t x, y, q, rem;
+    if (!ref_transform(m, p, c))
+        return r;
+    r.x = ZL_CACHE_COMPLEX;
+    if (!ref_inside(c, wd, ht))
+        return r;
+    x = round_div(((int64_t)c[0] + c[3]) * wd * (ZL_SUB_ONE / 2), c[3]);
+    y = round_div(((int64_t)c[3] - c[1]) * ht * (ZL_SUB_ONE / 2), c[3]);
+    if (x < INT16_MIN + 2 || x > INT16_MAX || y < INT16_MIN || y > INT16_MAX)
+        return r;
+    r.x = (int16_t)x;
+    r.y = (int16_t)y;
+    /* round(z / w * 65535 * 65536) by quotient and remainder */
+    q = (int64_t)c[2] * 65535 / c[3];
+    rem = (int64_t)c[2] * 65535 % c[3];
+    r.z = (uint32_t)(q * 65536 + round_div(rem * 65536, c[3]));
+    return r;
+}
+
+/* A value of random magnitude (and sign), now and then beyond the limit. */
+static int32_t rnd_mag(void)
+{
+    uint32_t v = rnd32() >> (rnd64() % 32u);
+    if ((rnd32() & 15u) != 0)
+        v &= (uint32_t)LIM - 1u; /* mostly within the limit */
+    return (rnd32() & 1u) ? (int32_t)(0u - (v & 0x7FFFFFFFu)) : (int32_t)(v & 0x7FFFFFFFu);
+}
+
+static int32_t clamp_lim(int64_t v)
+{
+    return (int32_t)(v < -LIM ? -LIM : (v > LIM ? LIM : v));
+}
+
+/* A coordinate near +-bound (the edge of a plane), or anywhere within it. */
+static int32_t near_bound(int64_t bound)
+{
+    int64_t d = (int64_t)(rnd32() % 5u) - 2;
+    int64_t v = (rnd32() & 3u) == 0 ? (int64_t)(rnd64() % (uint64_t)(2 * bound + 1)) - bound : bound + d;
+    return clamp_lim((rnd32() & 1u) ? -v : v);
+}
+
+/*
+ * Matrix and positions of one random draw: random entries (mostly out of
+ * the planes or out of range), a perspective camera (mostly inside), or the
+ * identity with w = position z and positions on the planes' edges.
+ */
+static void random_draw(zl_mat4 *m, zl_fixed *pos, uint16_t *wd, uint16_t *ht)
+{
+    unsigned kind = (unsigned)(rnd64() % 3u), v, k;
+    *wd = (uint16_t)(1u + rnd32() % ((rnd32() & 7u) == 0 ? 65535u : 4096u));
+    *ht = (uint16_t)(1u + rnd32() % ((rnd32() & 7u) == 0 ? 65535u : 4096u));
+    if (kind == 0) {
+        for (k = 0; k < 16; k++)
+            m->m[k] = rnd_mag();
+        for (k = 0; k < NV * 3u; k++)
+            pos[k] = rnd_mag();
+        return;
+    }
+    if (kind == 1) {
+        zl_mat4 p, view;
+        zl_vec3 eye = {rnd_mag() >> 12, rnd_mag() >> 12, rnd_mag() >> 12}, at = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
+        zl_fixed near_z = (zl_fixed)(1u + rnd32() % 65536u);
+        if (zl_mat4_perspective(&p, (zl_angle)(1000u + rnd32() % 30000u), (zl_fixed)(16384u + rnd32() % 200000u),
+                                near_z, near_z + (zl_fixed)(1u + rnd32() % 0x1000000u)) != ZL_OK ||
+            zl_mat4_look_at(&view, eye, at, up) != ZL_OK) {
+            zl_mat4_identity(&p);
+            zl_mat4_identity(&view);
+        }
+        zl_mat4_mul(m, &p, &view);
+        for (k = 0; k < NV * 3u; k++)
+            pos[k] = (zl_fixed)(rnd_mag() >> (rnd32() % 16u));
+        return;
+    }
+    /* clip x = pos x, y = pos y, z = a pos z + b, w = pos z */
+    zl_mat4_identity(m);
+    m->m[10] = (rnd32() & 1u) ? ZL_FX_ONE : 0;
+    m->m[11] = (zl_fixed)(rnd32() % 9u) - 4;
+    m->m[14] = ZL_FX_ONE;
+    m->m[15] = 0;
+    for (v = 0; v < NV; v++) {
+        int32_t w = (rnd32() & 3u) == 0 ? (int32_t)(rnd32() % 5u) - 2 : (int32_t)(rnd32() >> (rnd32() % 32u));
+        if ((rnd32() & 3u) == 0) /* the x or y plane then passes through integers */
+            w = (int32_t)(((rnd32() & 1u) ? *wd : *ht) * (int64_t)(rnd32() % 64u));
+        w = clamp_lim(w);
+        if (m->m[10] == 0)
+            m->m[11] = (zl_fixed)(rnd32() % 9u) - 4 + ((rnd32() & 1u) ? w : 0);
+        pos[v * 3u] = near_bound(((int64_t)*wd + 2 * ZL_GUARD_PX) * w / *wd);
+        pos[v * 3u + 1] = near_bound(((int64_t)*ht + 2 * ZL_GUARD_PX) * w / *ht);
+        pos[v * 3u + 2] = w;
+    }
+}
+
+static void test_cache_matches_64bit_formulas(void)
+{
+    unsigned draw, v, inside = 0, complex = 0, invalid = 0;
+    for (draw = 0; draw < 4000u; draw++) {
+        zl_mat4 m;
+        zl_fixed pos[NV * 3];
+        zl_mesh mesh = {0};
+        zl_source s;
+        zl_cached_vertex cache[NV + 1];
+        int any_bad = 0;
+        zl_status st;
+        random_draw(&m, pos, &s.width, &s.height);
+        mesh.positions = pos;
+        mesh.vertex_count = NV;
+        s.mesh = &mesh;
+        s.mvp = &m;
+        s.state = NULL;
+        s.cache = NULL;
+        cache[NV].x = 1234; /* not written */
+        st = zl_cache_vertices(&s, cache, 0, NV);
+        for (v = 0; v < NV; v++) {
+            zl_cached_vertex r = ref_cache(m.m, &pos[v * 3u], s.width, s.height);
+            zl_cached_vertex one = zl_cache_vertex(&s, (uint16_t)v);
+            TEST_ASSERT_EQUAL_INT(r.x, cache[v].x);
+            TEST_ASSERT_EQUAL_INT(r.y, cache[v].y);
+            TEST_ASSERT_EQUAL_UINT32(r.z, cache[v].z);
+            TEST_ASSERT_EQUAL_INT(r.x, one.x);
+            TEST_ASSERT_EQUAL_INT(r.y, one.y);
+            TEST_ASSERT_EQUAL_UINT32(r.z, one.z);
+            any_bad |= r.x == ZL_CACHE_INVALID;
+            invalid += r.x == ZL_CACHE_INVALID;
+            complex += r.x == ZL_CACHE_COMPLEX;
+            inside += r.x != ZL_CACHE_INVALID && r.x != ZL_CACHE_COMPLEX;
+        }
+        TEST_ASSERT_EQUAL_INT(1234, cache[NV].x);
+        TEST_ASSERT_EQUAL_INT(any_bad ? ZL_ERR_RANGE : ZL_OK, st);
+        TEST_ASSERT_EQUAL_INT(zl_check_positions(pos, NV, &m), st);
+        /* a part of the range writes just that part */
+        cache[3].x = cache[9].x = 77;
+        TEST_ASSERT_TRUE(zl_cache_vertices(&s, cache, 4, 5) <= ZL_OK);
+        TEST_ASSERT_EQUAL_INT(77, cache[3].x);
+        TEST_ASSERT_EQUAL_INT(77, cache[9].x);
+        TEST_ASSERT_EQUAL_INT(ref_cache(m.m, &pos[8 * 3u], s.width, s.height).x, cache[8].x);
+    }
+    /* every outcome is exercised many times */
+    TEST_ASSERT_TRUE(inside > 5000u && complex > 5000u && invalid > 5000u);
+    {
+        /* no vertices: only the matrix decides */
+        zl_mat4 m;
+        zl_mesh mesh = {0};
+        zl_source s = {0};
+        zl_fixed pos[3] = {0, 0, 0};
+        zl_cached_vertex c;
+        zl_mat4_identity(&m);
+        mesh.positions = pos;
+        s.mesh = &mesh;
+        s.mvp = &m;
+        s.width = s.height = 8;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_cache_vertices(&s, &c, 0, 0));
+        m.m[7] = (zl_fixed)(LIM + 1);
+        TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_cache_vertices(&s, &c, 0, 0));
+        TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_check_positions(pos, 0, &m));
+        TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_cache_vertices(&s, &c, 0, 1));
+        TEST_ASSERT_EQUAL_INT(ZL_CACHE_INVALID, c.x);
+    }
+}
+
+/* One vertex through both cache functions against the formulas. */
+static void check_one(const zl_mat4 *m, const zl_fixed *p, uint16_t wd, uint16_t ht)
+{
+    zl_mesh mesh = {0};
+    zl_source s = {0};
+    zl_cached_vertex c, r = ref_cache(m->m, p, wd, ht), one;
+    mesh.positions = p;
+    mesh.vertex_count = 1;
+    s.mesh = &mesh;
+    s.mvp = m;
+    s.width = wd;
+    s.height = ht;
+    TEST_ASSERT_EQUAL_INT(r.x == ZL_CACHE_INVALID ? ZL_ERR_RANGE : ZL_OK, zl_cache_vertices(&s, &c, 0, 1));
+    one = zl_cache_vertex(&s, 0);
+    TEST_ASSERT_EQUAL_INT(r.x, c.x);
+    TEST_ASSERT_EQUAL_INT(r.y, c.y);
+    TEST_ASSERT_EQUAL_UINT32(r.z, c.z);
+    TEST_ASSERT_EQUAL_INT(r.x, one.x);
+    TEST_ASSERT_EQUAL_INT(r.y, one.y);
+    TEST_ASSERT_EQUAL_UINT32(r.z, one.z);
+}
+
+/* Exact boundaries: transform results at INT32_MIN / INT32_MAX and one past,
+ * coordinates at +-2^30 and one past, window x and y at the int16 limits and
+ * the cache markers, planes met exactly. */
+static void test_cache_edges(void)
+{
+    static const int32_t ws[] = {1, 2, 3, 16, 48, 1000, 65536};
+    zl_mat4 m;
+    zl_fixed p[3];
+    int32_t off, t, x, side;
+    unsigned row, k;
+    for (row = 0; row < 4; row++) {
+        for (k = 0; k < 18; k++) {
+            off = (int32_t)(k % 3u) - 1;
+            t = (int32_t)(k / 3u % 3u) - 1;
+            side = k < 9 ? -1 : 1;
+            zl_mat4_identity(&m);
+            m.m[row * 4] = 2 * ZL_FX_ONE; /* 2 p.x + t */
+            m.m[row * 4 + 1] = 0;
+            m.m[row * 4 + 2] = 0;
+            m.m[row * 4 + 3] = t;
+            p[0] = (zl_fixed)(side * LIM + off);
+            p[1] = p[0] / 4;
+            p[2] = ZL_FX_ONE;
+            check_one(&m, p, 64, 64);
+        }
+    }
+    /* w = clip w, W = H = 1: window x = round((x + w) * 8 / w), window y =
+     * round((w - y) * 8 / w); x and y swept across the int16 limits. */
+    zl_mat4_identity(&m);
+    m.m[10] = 0;
+    m.m[14] = ZL_FX_ONE;
+    m.m[15] = 0;
+    for (k = 0; k < sizeof ws / sizeof ws[0]; k++) {
+        int32_t w = ws[k];
+        for (side = -1; side <= 1; side += 2) {
+            int32_t c = (int32_t)((int64_t)side * 32768 * w / 8 - w);
+            for (x = c - w / 4 - 3; x <= c + w / 4 + 3; x++) {
+                p[0] = x;
+                p[1] = 0; /* window y 8: x alone decides */
+                p[2] = w;
+                check_one(&m, p, 1, 1);
+                p[0] = 0;
+                p[1] = -x; /* y at the window value x had */
+                check_one(&m, p, 1, 1);
+            }
+        }
+    }
+}
+
+/* zl_project on any clip vertex (the clipping path's, slightly off the
+ * planes too) against the 64-bit formulas. */
+static void test_project_matches_64bit_formulas(void)
+{
+    unsigned k;
+    for (k = 0; k < 100000u; k++) {
+        zl_mat4 m;
+        zl_source s = {0};
+        zl_cvert v = {0, 0, 0, 0, 0, 0, 0};
+        zl_wvert out;
+        int64_t w, z;
+        zl_mat4_identity(&m);
+        s.mvp = &m;
+        s.width = (uint16_t)(1u + rnd32() % 4096u);
+        s.height = (uint16_t)(1u + rnd32() % 4096u);
+        v.w = (k & 1u) ? (int32_t)(rnd32() % 100u) - 50 : rnd_mag();
+        w = v.w < 1 ? 1 : v.w;
+        v.x = (k & 2u) ? rnd_mag() : near_bound((((int64_t)s.width + 2 * ZL_GUARD_PX) * w) / s.width);
+        v.y = (k & 4u) ? rnd_mag() : near_bound((((int64_t)s.height + 2 * ZL_GUARD_PX) * w) / s.height);
+        v.z = (k & 8u) ? rnd_mag() : (int32_t)(w - (int64_t)(rnd32() % 3u) * (int64_t)(rnd32() & 1u ? 1 : w));
+        zl_project(&s, &v, &out);
+        TEST_ASSERT_EQUAL_INT((int32_t)round_div(((int64_t)v.x + w) * s.width * (ZL_SUB_ONE / 2), w), out.x);
+        TEST_ASSERT_EQUAL_INT((int32_t)round_div((w - v.y) * s.height * (ZL_SUB_ONE / 2), w), out.y);
+        z = v.z < 0 ? 0 : (v.z > w ? w : v.z);
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)(z * 65535 / w * 65536 + round_div(z * 65535 % w * 65536, w)), out.z);
+    }
+}
+
+/* ------------------------------------------------------------ lighting */
+
+static uint32_t ref_isqrt(uint64_t v)
+{
+    uint64_t r = 0, bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    for (; bit != 0; bit >>= 2) {
+        if (v >= r + bit) {
+            v -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+    }
+    return (uint32_t)r;
+}
+
+static unsigned shift_to(int64_t big, unsigned bits)
+{
+    unsigned len = 0;
+    while (big >= ((int64_t)1 << (bits + len)))
+        len++;
+    return len;
+}
+
+static int32_t ref_q14(zl_fixed c)
+{
+    int32_t v = c / 4;
+    return v > (1 << 14) ? (1 << 14) : (v < -(1 << 14) ? -(1 << 14) : v);
+}
+
+/* The lighting definition: 64-bit normal, edges below 2^30, normal below 2^14. */
+static unsigned ref_intensity(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *p2, const zl_state *st)
+{
+    int64_t e[6], n[3], big = 0;
+    int32_t m[3], dot, len, cosv;
+    unsigned k, sh;
+    for (k = 0; k < 3; k++) {
+        e[k] = (int64_t)p1[k] - p0[k];
+        e[k + 3] = (int64_t)p2[k] - p0[k];
+    }
+    for (k = 0; k < 6; k++)
+        big = (e[k] < 0 ? -e[k] : e[k]) > big ? (e[k] < 0 ? -e[k] : e[k]) : big;
+    sh = shift_to(big, 30);
+    for (k = 0; k < 6; k++)
+        e[k] = floor_div(e[k], (int64_t)1 << sh);
+    n[0] = e[1] * e[5] - e[2] * e[4];
+    n[1] = e[2] * e[3] - e[0] * e[5];
+    n[2] = e[0] * e[4] - e[1] * e[3];
+    big = 0;
+    for (k = 0; k < 3; k++)
+        big = (n[k] < 0 ? -n[k] : n[k]) > big ? (n[k] < 0 ? -n[k] : n[k]) : big;
+    sh = shift_to(big, 14);
+    for (k = 0; k < 3; k++)
+        m[k] = (int32_t)floor_div(n[k], (int64_t)1 << sh);
+    len = (int32_t)ref_isqrt((uint64_t)((int64_t)m[0] * m[0] + (int64_t)m[1] * m[1] + (int64_t)m[2] * m[2]));
+    if (len == 0)
+        return st->ambient;
+    dot = m[0] * ref_q14(st->light_dir.x) + m[1] * ref_q14(st->light_dir.y) + m[2] * ref_q14(st->light_dir.z);
+    if (st->front_face == ZL_FRONT_CW)
+        dot = -dot;
+    if (dot <= 0)
+        return st->ambient;
+    cosv = dot / len;
+    if (cosv > (1 << 14))
+        cosv = 1 << 14;
+    return st->ambient + (unsigned)(((255 - st->ambient) * cosv + (1 << 13)) >> 14);
+}
+
+/* A random vertex: anywhere, or near p within a random edge length. */
+static void rnd_vertex(zl_fixed *v, const zl_fixed *near, unsigned edge_bits)
+{
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        int32_t d = (int32_t)(rnd32() >> (32u - edge_bits)) - (int32_t)(edge_bits ? 1u << (edge_bits - 1u) : 0u);
+        v[k] = near ? (zl_fixed)((uint32_t)near[k] + (uint32_t)d) : (zl_fixed)rnd32();
+    }
+}
+
+static void test_lighting_matches_64bit_definition(void)
+{
+    unsigned k, lit = 0, dark = 0;
+    for (k = 0; k < 200000u; k++) {
+        zl_fixed pos[9];
+        uint16_t idx[3] = {0, 1, 2};
+        zl_mesh mesh = {0};
+        zl_state st;
+        zl_source s = {0};
+        zl_poly poly;
+        unsigned eb = 1u + (unsigned)(rnd64() % 32u), i, c;
+        zl_state_default(&st);
+        st.light_on = 1;
+        st.ambient = (uint8_t)(rnd32() & 1u ? rnd32() : 0u);
+        st.front_face = (uint8_t)(rnd32() & 1u ? ZL_FRONT_CW : ZL_FRONT_CCW);
+        st.color.r = (uint8_t)rnd32();
+        st.color.g = (uint8_t)rnd32();
+        st.color.b = (uint8_t)rnd32();
+        if (rnd32() & 1u) {
+            st.light_dir.x = (zl_fixed)(rnd32() % 131073u) - 65536;
+            st.light_dir.y = (zl_fixed)(rnd32() % 131073u) - 65536;
+            st.light_dir.z = (zl_fixed)(rnd32() % 131073u) - 65536;
+        } else {
+            st.light_dir.x = (zl_fixed)rnd32();
+            st.light_dir.y = (zl_fixed)rnd32();
+            st.light_dir.z = (zl_fixed)rnd32();
+        }
+        /* first vertex anywhere (near the wrap too), the others near it */
+        rnd_vertex(pos, NULL, 0);
+        if ((k & 3u) == 0)
+            for (i = 0; i < 3; i++)
+                pos[i] = (zl_fixed)((rnd32() & 1u ? 0x80000000u : 0x7FFFFFFFu) + (rnd32() % 32768u) - 16384u);
+        else if ((k & 3u) == 1)
+            for (i = 0; i < 3; i++)
+                pos[i] >>= rnd32() % 31u;
+        rnd_vertex(&pos[3], pos, eb);
+        rnd_vertex(&pos[6], (k & 4u) ? &pos[3] : pos, eb);
+        if ((k & 31u) == 5)
+            for (i = 0; i < 3; i++)
+                pos[6 + i] = pos[i] + (zl_fixed)((pos[3 + i] - pos[i]) / 2); /* flat */
+        mesh.positions = pos;
+        mesh.vertex_count = 3;
+        mesh.triangle_count = 1;
+        mesh.indices = idx;
+        s.mesh = &mesh;
+        s.state = &st;
+        poly.n = 3;
+        for (i = 0; i < 3; i++) {
+            poly.v[i].r = (uint16_t)((k & 8u) ? 0u : rnd32() % (255u * 256u + 1u));
+            poly.v[i].g = (uint16_t)((k & 8u) ? 0u : rnd32() % (255u * 256u + 1u));
+            poly.v[i].b = (uint16_t)((k & 8u) ? 0u : rnd32() % (255u * 256u + 1u));
+        }
+        {
+            zl_poly before = poly;
+            unsigned want = ref_intensity(pos, &pos[3], &pos[6], &st);
+            zl_tri_shade(&s, 0, &poly);
+            TEST_ASSERT_EQUAL_UINT(want, poly.light);
+            TEST_ASSERT_EQUAL_UINT((st.color.r * want + 127u) / 255u, poly.flat.r);
+            TEST_ASSERT_EQUAL_UINT((st.color.b * want + 127u) / 255u, poly.flat.b);
+            for (i = 0; i < 3; i++) {
+                c = before.v[i].g;
+                TEST_ASSERT_EQUAL_UINT((c * want + 127u) / 255u, poly.v[i].g);
+            }
+            lit += want > st.ambient;
+            dark += want == st.ambient;
+        }
+    }
+    TEST_ASSERT_TRUE(lit > 20000u && dark > 20000u);
+}
+
+/* zl_isqrt32 around every square and power of two (the table's seams). */
+static void test_isqrt32_squares(void)
+{
+    uint32_t k, d;
+    for (k = 0; k <= 65535u; k++) {
+        uint32_t sq = k * k;
+        TEST_ASSERT_EQUAL_UINT(k, zl_isqrt32(sq));
+        TEST_ASSERT_EQUAL_UINT(k, zl_isqrt32(sq + 2u * k)); /* (k + 1)^2 - 1 */
+        if (k > 0)
+            TEST_ASSERT_EQUAL_UINT(k - 1u, zl_isqrt32(sq - 1u));
+    }
+    for (k = 0; k < 32u; k++)
+        for (d = 0; d < 64u; d++) {
+            uint32_t v = ((uint32_t)1 << k) + d - 32u;
+            TEST_ASSERT_EQUAL_UINT(ref_isqrt(v), zl_isqrt32(v));
+            v = ((uint32_t)1 << k) * (1u + (d & 3u)) - 1u - (d >> 2);
+            TEST_ASSERT_EQUAL_UINT(ref_isqrt(v), zl_isqrt32(v));
+        }
+    for (k = 0; k < 100000u; k++) {
+        uint32_t v = rnd32() >> (k % 32u);
+        TEST_ASSERT_EQUAL_UINT(ref_isqrt(v), zl_isqrt32(v));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_udiv_edge_cases);
     RUN_TEST(test_udiv_random_quotients);
     RUN_TEST(test_udiv_random_numerators);
+    RUN_TEST(test_cache_matches_64bit_formulas);
+    RUN_TEST(test_cache_edges);
+    RUN_TEST(test_project_matches_64bit_formulas);
+    RUN_TEST(test_lighting_matches_64bit_definition);
+    RUN_TEST(test_isqrt32_squares);
     return UNITY_END();
 }

@@ -110,23 +110,44 @@ static uint16_t color_out(int32_t c)
     return (uint16_t)(c > 255 * 256 ? 255 * 256 : c);
 }
 
+/* floor(n / d) for n >= 0 whose quotient fits 32 bits: one 32-bit division
+ * when n does (most vertices), else the 64/32 one, never the libgcc call. */
+static inline uint32_t udiv_small(uint64_t n, uint32_t d)
+{
+    if ((n >> 32) == 0)
+        return (uint32_t)n / d;
+    return zl_udiv64_32(n, d, NULL);
+}
+
+/* zl_round_div64(n, w) for w >= 1, any n: it equals floor((n + floor(w/2)) / w),
+ * which the 64/32 division gives when that is non-negative and fits. */
+static int32_t round_div_w(int64_t n, int32_t w)
+{
+    int64_t m = n + (w >> 1);
+    if (m >= 0 && (uint64_t)m < ((uint64_t)(uint32_t)w << 32))
+        return (int32_t)udiv_small((uint64_t)m, (uint32_t)w);
+    return (int32_t)zl_floor_div64(m, w);
+}
+
+/* round(z / w * 65535 * 65536) for 0 <= z <= w, w >= 1: one 64/32 division
+ * (z * (2^32 - 2^16) + w/2 < w * 2^32, so the quotient fits 32 bits). */
+static uint32_t depth_q16(uint32_t z, uint32_t w)
+{
+    return udiv_small((uint64_t)z * 0xFFFF0000u + (w >> 1), w);
+}
+
 void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
 {
     int64_t z = v->z < 0 ? 0 : v->z;
     if (s->mvp != NULL) {
         /* Rounded window position in subpixels: (x/w + 1) * W/2 * 2^SUB, and
          * (1 - y/w) * H/2 * 2^SUB with row 0 at the top. */
-        int64_t w = v->w < 1 ? 1 : v->w;
-        int64_t q, r;
-        out->x = (int32_t)zl_round_div64(((int64_t)v->x + w) * s->width * (ZL_SUB_ONE / 2), w);
-        out->y = (int32_t)zl_round_div64((w - v->y) * s->height * (ZL_SUB_ONE / 2), w);
-        /* depth * 65535 * 65536 = z / w * 65535 * 65536, rounded, split as
-         * quotient and remainder so no product exceeds 64 bits. */
+        int32_t w = v->w < 1 ? 1 : v->w;
+        out->x = round_div_w(((int64_t)v->x + w) * s->width * (ZL_SUB_ONE / 2), w);
+        out->y = round_div_w(((int64_t)w - v->y) * s->height * (ZL_SUB_ONE / 2), w);
         if (z > w)
             z = w;
-        q = z * 65535 / w;
-        r = z * 65535 % w;
-        out->z = (uint32_t)(q * 65536 + zl_round_div64(r * 65536, w));
+        out->z = depth_q16((uint32_t)z, (uint32_t)w);
     } else {
         /* Pixel space: x, y are Q16.16 pixels, z is depth 0..1 in Q16.16. */
         out->x = (int32_t)zl_floor_shift64((int64_t)v->x + (1 << (15 - ZL_SUB_BITS)), 16 - ZL_SUB_BITS);
@@ -140,7 +161,8 @@ void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
     out->b = color_out(v->b);
 }
 
-zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
+/* zl_cache_vertex by its definition: transform, 7 planes, projection. */
+static zl_cached_vertex cache_vertex_generic(const zl_source *s, uint16_t idx)
 {
     zl_cached_vertex c;
     zl_cvert v;
@@ -161,6 +183,149 @@ zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
     c.y = (int16_t)w.y;
     c.z = w.z;
     return c;
+}
+
+/*
+ * The fast path of the vertex cache, with a matrix: the same numbers as
+ * cache_vertex_generic, with the per-draw work hoisted out of the vertex loop.
+ */
+#define COORD_LIMIT ((uint32_t)1 << 30) /* zl_matrix.c's limit: +-16384.0 */
+
+typedef struct {
+    const zl_fixed *m;   /* the matrix; every entry within +-COORD_LIMIT */
+    int64_t bias[4];     /* translation column * 2^16 + 2^15: rounding folded in */
+    uint32_t wd, ht;     /* viewport */
+    uint32_t gx, gy;     /* W + 2G, H + 2G: the guard-band planes */
+    uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
+} vx_setup;
+
+/* |v| <= 2^30, the coordinate and matrix entry limit, in one compare. */
+static int in_limit(zl_fixed v)
+{
+    return (uint32_t)v + COORD_LIMIT <= 2u * COORD_LIMIT;
+}
+
+/* 0 when a matrix entry is out of range: then every vertex is invalid. */
+static int vx_prepare(const zl_source *s, vx_setup *vs)
+{
+    const zl_fixed *m = s->mvp->m;
+    int k;
+    for (k = 0; k < 16; k++)
+        if (!in_limit(m[k]))
+            return 0;
+    vs->m = m;
+    for (k = 0; k < 4; k++)
+        vs->bias[k] = (int64_t)m[k * 4 + 3] * ZL_FX_ONE + 32768;
+    vs->wd = s->width;
+    vs->ht = s->height;
+    vs->gx = s->width + 2u * ZL_GUARD_PX;
+    vs->gy = s->height + 2u * ZL_GUARD_PX;
+    vs->hx = s->width * (uint32_t)(ZL_SUB_ONE / 2);
+    vs->hy = s->height * (uint32_t)(ZL_SUB_ONE / 2);
+    return 1;
+}
+
+/* Row r of the transform, rounded as zl_transform_point; 0 if it leaves Q16.16.
+ * Three 32x32->64 multiply-accumulates (SMLAL on Cortex-M3/M4); the result
+ * fits when acc is in [-2^47, 2^47), i.e. its high word in [-2^15, 2^15). */
+static int vx_row(const vx_setup *vs, int r, const zl_fixed *p, int32_t *out)
+{
+    const zl_fixed *m = &vs->m[r * 4];
+    int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    if ((uint32_t)((uint64_t)acc >> 32) + 0x8000u > 0xFFFFu)
+        return 0;
+    *out = (int32_t)zl_floor_shift64(acc, 16);
+    return 1;
+}
+
+/*
+ * Inside all 7 planes of zl_outcode: w >= 1, 0 <= z <= w, and the left/right
+ * pair W x + (W + 2G) w >= 0, -W x + (W + 2G) w >= 0 is W |x| <= (W + 2G) w
+ * (w > 0); likewise for y. Unsigned 32x32->64 products: exact.
+ */
+static int vx_inside(const vx_setup *vs, uint32_t ax, uint32_t ay, int32_t z, int32_t w)
+{
+    if (w < 1 || z < 0 || z > w)
+        return 0;
+    return (uint64_t)ax * vs->wd <= (uint64_t)vs->gx * (uint32_t)w &&
+           (uint64_t)ay * vs->ht <= (uint64_t)vs->gy * (uint32_t)w;
+}
+
+/*
+ * zl_project's round((c + w) * h / w) as h + round(c * h / w), both exact:
+ * h is an integer. With n = c h, round(n / w) = floor((n + w/2) / w) is
+ * -floor((-n + w - 1 - w/2) / w) for n < 0, so one unsigned division of
+ * |n| plus a small offset serves both signs; inside the guard band the
+ * quotient is below 2^25, and |n| usually fits 32 bits (one UDIV).
+ */
+static int32_t vx_window(uint32_t h, int32_t c, int neg, uint32_t w)
+{
+    uint32_t ac = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
+    uint32_t half = w >> 1;
+    uint32_t q = udiv_small((uint64_t)ac * h + (neg ? w - 1u - half : half), w);
+    return neg ? (int32_t)h - (int32_t)q : (int32_t)(h + q);
+}
+
+static zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed *p)
+{
+    zl_cached_vertex c;
+    int32_t x, y, z, w, wx, wy;
+    c.x = ZL_CACHE_INVALID;
+    c.y = 0;
+    c.z = 0;
+    if (!in_limit(p[0]) || !in_limit(p[1]) || !in_limit(p[2]) || !vx_row(vs, 0, p, &x) ||
+        !vx_row(vs, 1, p, &y) || !vx_row(vs, 2, p, &z) || !vx_row(vs, 3, p, &w))
+        return c;
+    c.x = ZL_CACHE_COMPLEX;
+    if (!vx_inside(vs, x < 0 ? 0u - (uint32_t)x : (uint32_t)x, y < 0 ? 0u - (uint32_t)y : (uint32_t)y, z, w))
+        return c;
+    wx = vx_window(vs->hx, x, x < 0, (uint32_t)w);
+    wy = vx_window(vs->hy, y, y > 0, (uint32_t)w); /* row 0 at the top: (w - y) h / w */
+    if (wx <= ZL_CACHE_INVALID || wx > INT16_MAX || wy < INT16_MIN || wy > INT16_MAX)
+        return c;
+    c.x = (int16_t)wx;
+    c.y = (int16_t)wy;
+    c.z = depth_q16((uint32_t)z, (uint32_t)w);
+    return c;
+}
+
+zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
+{
+    vx_setup vs;
+    if (s->mvp == NULL)
+        return cache_vertex_generic(s, idx);
+    if (!vx_prepare(s, &vs)) {
+        zl_cached_vertex c = {ZL_CACHE_INVALID, 0, 0};
+        return c;
+    }
+    return vx_cache(&vs, &s->mesh->positions[idx * 3u]);
+}
+
+zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_t first, uint16_t count)
+{
+    const zl_cached_vertex bad = {ZL_CACHE_INVALID, 0, 0};
+    const zl_fixed *p = &s->mesh->positions[first * 3u];
+    zl_cached_vertex *c = &cache[first], *end = c + count;
+    zl_status st = ZL_OK;
+    vx_setup vs;
+    if (s->mvp == NULL) {
+        /* Pixel space: nothing can be out of range. */
+        uint32_t v;
+        for (v = first; v < (uint32_t)first + count; v++)
+            cache[v] = cache_vertex_generic(s, (uint16_t)v);
+        return ZL_OK;
+    }
+    if (!vx_prepare(s, &vs)) {
+        for (; c != end; c++)
+            *c = bad;
+        return ZL_ERR_RANGE;
+    }
+    for (; c != end; c++, p += 3) {
+        *c = vx_cache(&vs, p);
+        if (c->x == ZL_CACHE_INVALID)
+            st = ZL_ERR_RANGE;
+    }
+    return st;
 }
 
 static unsigned bit_length(uint64_t v)
@@ -268,46 +433,101 @@ static int32_t light_q14(zl_fixed c)
     return v > (1 << 14) ? (1 << 14) : (v < -(1 << 14) ? -(1 << 14) : v);
 }
 
+/* Bit length of v (0 for 0). */
+static unsigned bit_length32(uint32_t v)
+{
+#if defined(__GNUC__)
+    return v == 0 ? 0u : 32u - (unsigned)__builtin_clz(v); /* CLZ */
+#else
+    unsigned n = 0;
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+static uint32_t abs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+/*
+ * Face normal of small triangles (most of a mesh), all in 32 bits: every
+ * edge below 2^14, so the cross product stays below 2^29. The differences
+ * are taken modulo 2^32; with the first vertex within +-2^30, a wrapped
+ * difference below 2^14 is the true one (a true one of 2^32 - 2^14 or more
+ * would need |p0| > 2^31 - 2^14). 0 when the triangle is not small.
+ */
+static int small_normal(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *p2, int32_t *n)
+{
+    int32_t e[6];
+    uint32_t mag = 0;
+    unsigned k;
+    if (!in_limit(p0[0]) || !in_limit(p0[1]) || !in_limit(p0[2]))
+        return 0;
+    for (k = 0; k < 3; k++) {
+        e[k] = (int32_t)((uint32_t)p1[k] - (uint32_t)p0[k]);
+        e[k + 3] = (int32_t)((uint32_t)p2[k] - (uint32_t)p0[k]);
+        mag |= abs32(e[k]) | abs32(e[k + 3]); /* below 2^14 iff every one is */
+    }
+    if (mag >= (1u << 14))
+        return 0;
+    n[0] = e[1] * e[5] - e[2] * e[4];
+    n[1] = e[2] * e[3] - e[0] * e[5];
+    n[2] = e[0] * e[4] - e[1] * e[3];
+    return 1;
+}
+
+/* The normal of any triangle, scaled below 2^14: edges brought below 2^30
+ * so the 64-bit cross product cannot overflow, then the normal shifted. */
+static ZL_NOINLINE void large_normal(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *p2, int32_t *m)
+{
+    int64_t e[6], n[3];
+    unsigned k, shift;
+    for (k = 0; k < 3; k++) {
+        e[k] = (int64_t)p1[k] - p0[k];
+        e[k + 3] = (int64_t)p2[k] - p0[k];
+    }
+    shift = shift_below(max_abs(e, 6), 30);
+    for (k = 0; k < 6; k++)
+        e[k] = zl_floor_shift64(e[k], shift);
+    n[0] = e[1] * e[5] - e[2] * e[4];
+    n[1] = e[2] * e[3] - e[0] * e[5];
+    n[2] = e[0] * e[4] - e[1] * e[3];
+    shift = shift_below(max_abs(n, 3), 14);
+    for (k = 0; k < 3; k++)
+        m[k] = (int32_t)zl_floor_shift64(n[k], shift);
+}
+
 /*
  * Lambert intensity 0..255 of the face (p0, p1, p2), front side by winding.
  * Only 8 bits come out, so the normal is scaled to 14 bits and the rest is
  * 32-bit arithmetic (one 32-bit square root and division): this runs once
- * per drawn triangle, so it must be cheap on a Cortex-M.
+ * per drawn triangle, so it must be cheap on a Cortex-M. The numbers are
+ * those of the 64-bit definition (large_normal) for every triangle: a
+ * small one's normal is the same product in 32 bits, and the shift to 14
+ * bits is the bit length of the largest component, which is the bit length
+ * of the OR of all three.
  */
 static unsigned face_intensity(const zl_source *s, const uint16_t *idx)
 {
     const zl_fixed *pos = s->mesh->positions;
+    const zl_fixed *p0 = &pos[idx[0] * 3u], *p1 = &pos[idx[1] * 3u], *p2 = &pos[idx[2] * 3u];
     const zl_state *st = s->state;
-    int64_t e[6], n[3], big;
     int32_t m[3], dot, cosv;
     uint32_t len;
-    unsigned k, shift;
-    for (k = 0; k < 3; k++) {
-        e[k] = (int64_t)pos[idx[1] * 3u + k] - pos[idx[0] * 3u + k];
-        e[k + 3] = (int64_t)pos[idx[2] * 3u + k] - pos[idx[0] * 3u + k];
-    }
-    big = max_abs(e, 6);
-    if (big < ((int64_t)1 << 14)) {
-        /* Small triangles (most of a mesh): the same products in 32 bits. */
-        int32_t a[6];
-        for (k = 0; k < 6; k++)
-            a[k] = (int32_t)e[k];
-        n[0] = a[1] * a[5] - a[2] * a[4];
-        n[1] = a[2] * a[3] - a[0] * a[5];
-        n[2] = a[0] * a[4] - a[1] * a[3];
+    if (small_normal(p0, p1, p2, m)) {
+        unsigned len_n = bit_length32(abs32(m[0]) | abs32(m[1]) | abs32(m[2]));
+        if (len_n > 14) {
+            m[0] = zl_floor_shift32(m[0], len_n - 14);
+            m[1] = zl_floor_shift32(m[1], len_n - 14);
+            m[2] = zl_floor_shift32(m[2], len_n - 14);
+        }
     } else {
-        /* Edges below 2^30 so the cross product fits 64 bits... */
-        shift = shift_below(big, 30);
-        for (k = 0; k < 6; k++)
-            e[k] = zl_floor_shift64(e[k], shift);
-        n[0] = e[1] * e[5] - e[2] * e[4];
-        n[1] = e[2] * e[3] - e[0] * e[5];
-        n[2] = e[0] * e[4] - e[1] * e[3];
+        large_normal(p0, p1, p2, m);
     }
-    /* ... and the normal below 2^14, enough for 8 bits of intensity. */
-    shift = shift_below(max_abs(n, 3), 14);
-    for (k = 0; k < 3; k++)
-        m[k] = (int32_t)zl_floor_shift64(n[k], shift);
     len = zl_isqrt32((uint32_t)(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]));
     if (len == 0)
         return st->ambient;
@@ -351,6 +571,8 @@ static void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *
     poly->flat.g = scale255(poly->flat.g, i);
     poly->flat.b = scale255(poly->flat.b, i);
     for (k = 0; k < poly->n; k++) {
+        if ((poly->v[k].r | poly->v[k].g | poly->v[k].b) == 0)
+            continue; /* black stays black: no vertex colours, the common case */
         poly->v[k].r = scale255_q8(poly->v[k].r, i);
         poly->v[k].g = scale255_q8(poly->v[k].g, i);
         poly->v[k].b = scale255_q8(poly->v[k].b, i);

@@ -142,17 +142,6 @@ typedef struct {
     uint16_t width;
 } zl_span_state;
 
-/* floor(v / 2^shift) in 32 bits (an arithmetic shift where >> is one). */
-static inline int32_t zl_floor_shift32(int32_t v, unsigned shift)
-{
-#if ((-1) >> 1) == -1
-    return v >> shift;
-#else
-    int32_t d = (int32_t)1 << shift, q = v / d;
-    return (v % d) < 0 ? q - 1 : q;
-#endif
-}
-
 /*
  * Division by a divisor fixed for a whole triangle (Moller and Granlund,
  * "Improved division by invariant integers", IEEE TC 2011, algorithm 4):

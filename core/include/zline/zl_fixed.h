@@ -68,6 +68,16 @@ static inline int64_t zl_floor_shift64(int64_t n, unsigned shift)
 #endif
 }
 
+/* floor(n / 2^shift) for signed 32-bit n, as zl_floor_shift64. */
+static inline int32_t zl_floor_shift32(int32_t n, unsigned shift)
+{
+#if ((-1) >> 1) == -1
+    return n >> shift;
+#else
+    return (int32_t)zl_floor_shift64(n, shift);
+#endif
+}
+
 /* floor(n / d) for d > 0. */
 static inline int64_t zl_floor_div64(int64_t n, int64_t d)
 {
