@@ -267,6 +267,139 @@ static inline void span_gouraud_565(unsigned func, int swap, uint16_t *crow, uin
     }
 }
 
+/* The RGB565 value of Q16 channels in range (below 256 << 16). red is the
+ * mask 0xF800, passed as a value so that GCC keeps it in a register: then
+ * red is one `and` with a shifted operand. Green needs no mask (g >> 18 has
+ * no bits above its six) and blue none either, so the pack is four
+ * instructions: and, shift, two orr with a shifted operand. */
+static ZL_ALWAYS_INLINE uint32_t pack565(uint32_t r, uint32_t g, uint32_t b, uint32_t red)
+{
+    return ((r >> 8) & red) | ((g >> 18) << 5) | (b >> 19);
+}
+
+/* The values of a Gouraud run (see zl_pair_run): depth y and colours c of
+ * its first pixel, their steps, and the masks 0xFFFF0000 and 0xF800. */
+typedef struct {
+    uint32_t y, dy, c[3], dc[3], hi, red;
+} zl_gouraud_run;
+
+/* Gouraud RGB565 on an exact span from 4-byte aligned rows, a pair per step:
+ * one depth load, two compares, one depth store and one colour store. As
+ * flat_pair_run: i runs up to 0 from the rows' ends, and the result is the
+ * index of the pair where a test fails (nothing of it written), or 0. */
+static ZL_ALWAYS_INLINE int32_t gouraud_pair_run(unsigned func, uint16_t *cend, uint16_t *zend, int32_t i,
+                                                 const zl_gouraud_run *s)
+{
+    uint32_t y = s->y, dy = s->dy, r = s->c[0], g = s->c[1], b = s->c[2];
+    uint32_t dr = s->dc[0], dg = s->dc[1], db = s->dc[2], red = s->red;
+    for (; i != 0; i += 2) {
+        uint32_t y1 = y + dy, w = pair_load(zend + i), v;
+        if (!pair_pass(func, y, y1, w))
+            return i;
+        pair_store(zend + i, ((y1 >> 16) << 16) | (y >> 16));
+        v = pack565(r, g, b, red);
+        r += dr;
+        g += dg;
+        b += db;
+        pair_store(cend + i, v | (pack565(r, g, b, red) << 16));
+        r += dr;
+        g += dg;
+        b += db;
+        y = y1 + dy;
+    }
+    return 0;
+}
+
+static ZL_NOINLINE int32_t gouraud_pair_run_less(uint16_t *cend, uint16_t *zend, int32_t i,
+                                                 const zl_gouraud_run *s)
+{
+    return gouraud_pair_run(ZL_LESS, cend, zend, i, s);
+}
+
+static ZL_NOINLINE int32_t gouraud_pair_run_lequal(uint16_t *cend, uint16_t *zend, int32_t i,
+                                                   const zl_gouraud_run *s)
+{
+    return gouraud_pair_run(ZL_LEQUAL, cend, zend, i, s);
+}
+
+/* One pixel of the Gouraud pair loops: depth d, channels r, g, b. */
+static ZL_ALWAYS_INLINE void gouraud_pixel(unsigned func, uint16_t *c, uint16_t *zp, uint32_t d,
+                                           const uint32_t *rgb)
+{
+    if (depth_pass(func, d, *zp)) {
+        *zp = (uint16_t)d;
+        *c = (uint16_t)pack565(rgb[0], rgb[1], rgb[2], 0xF800u);
+    }
+}
+
+/* The values at pixel k of a span: start + k*step, which modulo 2^32 is
+ * the same as stepping k times. */
+static void gouraud_at(uint32_t k, const uint32_t *c, const uint32_t *dc, uint32_t *out)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        out[j] = c[j] + k * dc[j];
+}
+
+/* n (even) pixels of an exact Gouraud span from 4-byte aligned rows: runs
+ * of passing pairs, and between them a failing pair pixel by pixel. */
+static void span_gouraud_pairs(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                               const uint32_t *c, const uint32_t *dc)
+{
+    zl_gouraud_run s;
+    uint16_t *cend = crow + n, *zend = zrow + n;
+    int32_t i = -n;
+    s.dy = dz << 2;
+    s.dc[0] = dc[0];
+    s.dc[1] = dc[1];
+    s.dc[2] = dc[2];
+    s.hi = 0xFFFF0000u;
+    s.red = 0xF800u;
+    while (i != 0) {
+        uint32_t at = (uint32_t)(i + n), rgb[3];
+        s.y = (z + at * dz) << 2;
+        gouraud_at(at, c, dc, s.c);
+        i = func == ZL_LESS ? gouraud_pair_run_less(cend, zend, i, &s) : gouraud_pair_run_lequal(cend, zend, i, &s);
+        if (i == 0)
+            break;
+        at = (uint32_t)(i + n);
+        gouraud_at(at, c, dc, rgb);
+        gouraud_pixel(func, cend + i, zend + i, (z + at * dz) >> 14, rgb);
+        gouraud_at(at + 1, c, dc, rgb);
+        gouraud_pixel(func, cend + i + 1, zend + i + 1, (z + (at + 1) * dz) >> 14, rgb);
+        i += 2;
+    }
+}
+
+/* Exact Gouraud span into RGB565 in native byte order: as span_flat_exact,
+ * an aligning pixel, pairs, a last odd pixel when the rows allow pairs. */
+static void span_gouraud_exact(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                               const uint32_t *c, const uint32_t *dc)
+{
+    uint32_t c0[3], rgb[3];
+    if (!little_endian() || (((uintptr_t)crow ^ (uintptr_t)zrow) & 2u) != 0) {
+        if (func == ZL_LESS)
+            span_gouraud_565(ZL_LESS, 0, crow, zrow, n, z, dz, c, dc);
+        else
+            span_gouraud_565(ZL_LEQUAL, 0, crow, zrow, n, z, dz, c, dc);
+        return;
+    }
+    gouraud_at(0, c, dc, c0);
+    if (((uintptr_t)zrow & 2u) != 0) {
+        gouraud_pixel(func, crow, zrow, z >> 14, c0);
+        gouraud_at(1, c, dc, c0);
+        crow++;
+        zrow++;
+        n--;
+        z += dz;
+    }
+    span_gouraud_pairs(func, crow, zrow, n & ~1, z, dz, c0, dc);
+    if (n & 1) {
+        gouraud_at((uint32_t)(n - 1), c0, dc, rgb);
+        gouraud_pixel(func, crow + n - 1, zrow + n - 1, (z + (uint32_t)(n - 1) * dz) >> 14, rgb);
+    }
+}
+
 /* The Gouraud fast path applies: RGB565, every channel, LESS or LEQUAL with
  * depth write, an aligned row, and no stepper leaving its range. */
 static int gouraud_fast(const zl_span_state *ss, const uint8_t *crow, int32_t n, uint32_t z, uint32_t dz,
@@ -291,11 +424,11 @@ void zl_span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int
         if (ss->func == ZL_LESS && swap)
             span_gouraud_565(ZL_LESS, 1, c16, zrow, n, z, dz, c, dc);
         else if (ss->func == ZL_LESS)
-            span_gouraud_565(ZL_LESS, 0, c16, zrow, n, z, dz, c, dc);
+            span_gouraud_exact(ZL_LESS, c16, zrow, n, z, dz, c, dc);
         else if (swap)
             span_gouraud_565(ZL_LEQUAL, 1, c16, zrow, n, z, dz, c, dc);
         else
-            span_gouraud_565(ZL_LEQUAL, 0, c16, zrow, n, z, dz, c, dc);
+            span_gouraud_exact(ZL_LEQUAL, c16, zrow, n, z, dz, c, dc);
         return;
     }
     span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
