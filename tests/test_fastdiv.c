@@ -489,7 +489,9 @@ static void rnd_vertex(zl_fixed *v, const zl_fixed *near, unsigned edge_bits)
 {
     unsigned k;
     for (k = 0; k < 3; k++) {
-        int32_t d = (int32_t)(rnd32() >> (32u - edge_bits)) - (int32_t)(edge_bits ? 1u << (edge_bits - 1u) : 0u);
+        uint32_t r = rnd32(); /* drawn either way, so the sequence does not depend on edge_bits */
+        /* in [-2^(edge_bits-1), 2^(edge_bits-1)), the subtraction done unsigned */
+        int32_t d = edge_bits ? (int32_t)((r >> (32u - edge_bits)) - (1u << (edge_bits - 1u))) : 0;
         v[k] = near ? (zl_fixed)((uint32_t)near[k] + (uint32_t)d) : (zl_fixed)rnd32();
     }
 }
@@ -533,7 +535,7 @@ static void test_lighting_matches_64bit_definition(void)
         rnd_vertex(&pos[6], (k & 4u) ? &pos[3] : pos, eb);
         if ((k & 31u) == 5)
             for (i = 0; i < 3; i++)
-                pos[6 + i] = pos[i] + (zl_fixed)((pos[3 + i] - pos[i]) / 2); /* flat */
+                pos[6 + i] = (zl_fixed)(pos[i] + ((int64_t)pos[3 + i] - pos[i]) / 2); /* flat: the midpoint */
         mesh.positions = pos;
         mesh.vertex_count = 3;
         mesh.triangle_count = 1;

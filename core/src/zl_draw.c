@@ -166,6 +166,29 @@ static int plain_flat(const zl_context *ctx)
            sty->toon_bands == 0 && !zl_style_needs_planes(sty);
 }
 
+/* The general setup of a cached triangle zl_tri_setup_flat could not take
+ * (its numbers beyond 32 bits): 0 when it has no pixels in the target. */
+static ZL_NOINLINE int setup_general(const zl_context *ctx, const zl_source *src, const uint16_t *idx, zl_poly *poly,
+                                     zl_active *tri)
+{
+    int32_t first, end;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        const zl_cached_vertex *c = &src->cache[idx[k]];
+        poly->v[k].x = c->x;
+        poly->v[k].y = c->y;
+        poly->v[k].z = c->z;
+        poly->v[k].r = 0; /* vertex colours only matter to Gouraud shading */
+        poly->v[k].g = 0;
+        poly->v[k].b = 0;
+    }
+    poly->n = 3;
+    if (!zl_tri_classify(&poly->v[0], &poly->v[1], &poly->v[2], &ctx->state, src->width, src->height, &first, &end))
+        return 0;
+    zl_tri_setup_rows(tri, NULL, NULL, NULL, &poly->v[0], &poly->v[1], &poly->v[2], poly, &ctx->state, first, end);
+    return 1;
+}
+
 /*
  * Triangle t of a plain flat draw from the vertex cache: the same record as
  * zl_tri_polygon_geom + may_draw + zl_tri_shade + zl_tri_piece give (one
@@ -173,33 +196,51 @@ static int plain_flat(const zl_context *ctx)
  * triangles are never shaded. Returns 0 when a vertex needs clipping: then
  * the general path draws the triangle.
  */
-static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss)
+static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
+                       int cull_sign)
 {
     const uint16_t *idx = &src->mesh->indices[t * 3u];
+    const zl_cached_vertex *c0 = &src->cache[idx[0]], *c1 = &src->cache[idx[1]], *c2 = &src->cache[idx[2]];
     zl_poly poly;
     zl_active tri;
-    int32_t first, end;
-    unsigned k;
-    for (k = 0; k < 3; k++) {
-        const zl_cached_vertex *c = &src->cache[idx[k]];
-        if (c->x == ZL_CACHE_INVALID)
-            return 1; /* dropped, as zl_tri_polygon_geom drops it */
-        if (c->x == ZL_CACHE_COMPLEX)
-            return 0;
-        poly.v[k].x = c->x;
-        poly.v[k].y = c->y;
-        poly.v[k].z = c->z;
-        poly.v[k].r = 0; /* vertex colours only matter to Gouraud shading */
-        poly.v[k].g = 0;
-        poly.v[k].b = 0;
+    int64_t area;
+    int set;
+    if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
+        /* a marker: dropped as zl_tri_polygon_geom drops it, or clipped */
+        return c0->x == ZL_CACHE_INVALID || c1->x == ZL_CACHE_INVALID || c2->x == ZL_CACHE_INVALID;
     }
-    poly.n = 3;
-    if (!zl_tri_classify(&poly.v[0], &poly.v[1], &poly.v[2], &ctx->state, src->width, src->height, &first, &end))
+    /* Most culled triangles end here, before any copy: zl_tri_classify's
+     * area test on the cached coordinates (int16, so the products fit). */
+    area = (int64_t)((int32_t)c1->x - c0->x) * ((int32_t)c2->y - c0->y) -
+           (int64_t)((int32_t)c2->x - c0->x) * ((int32_t)c1->y - c0->y);
+    if (area == 0 || (area < 0 ? -1 : 1) == cull_sign)
+        return 1;
+    set = zl_tri_setup_flat(&tri, c0, c1, c2, src->width, src->height);
+    if (set == 0)
+        return 1;
+    poly.n = 0; /* flat: no vertex colours for the lighting to scale */
+    if (set < 0 && !setup_general(ctx, src, idx, &poly, &tri))
         return 1;
     zl_tri_shade(src, t, &poly);
-    zl_tri_setup_rows(&tri, NULL, NULL, NULL, &poly.v[0], &poly.v[1], &poly.v[2], &poly, &ctx->state, first, end);
+    tri.rgb[0] = poly.flat.r;
+    tri.rgb[1] = poly.flat.g;
+    tri.rgb[2] = poly.flat.b;
+    tri.light = poly.light;
     draw_rows(ctx, &tri, NULL, NULL, ss);
     return 1;
+}
+
+/* The sign of the window-space area (zl_tri_classify's) of the triangles the
+ * state culls: y grows down, so a negative area is counter-clockwise on
+ * screen. 0 when neither side is culled by area alone. */
+static int culled_area_sign(const zl_state *st)
+{
+    int front_sign = st->front_face == ZL_FRONT_CCW ? -1 : 1;
+    if (st->cull == ZL_CULL_BACK)
+        return -front_sign;
+    if (st->cull == ZL_CULL_FRONT)
+        return front_sign;
+    return 0;
 }
 
 /* The checks every draw call starts with: context, target, state, style. */
@@ -233,31 +274,35 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
-    int planes, plain;
+    int planes, plain, cull_sign;
     st = check_context(ctx);
     if (st == ZL_OK)
-        st = zl_check_geometry(mesh, mvp);
+        st = zl_check_mesh(mesh, mvp == NULL);
     if (st != ZL_OK)
         return st;
     source_init(&src, ctx, mesh, mvp);
     if (ctx->vertex_cache != NULL && ((uintptr_t)ctx->vertex_cache & 3u) == 0 &&
         ctx->vertex_cache_bytes >= ZL_VERTEX_CACHE_BYTES(mesh->vertex_count)) {
         /* Transform each vertex once; triangles read the cache exactly as
-         * scanline mode does, so the pixels do not change. */
-        zl_cached_vertex *cache = (zl_cached_vertex *)ctx->vertex_cache;
-        uint16_t v;
-        for (v = 0; v < mesh->vertex_count; v++)
-            cache[v] = zl_cache_vertex(&src, v);
-        src.cache = cache;
+         * scanline mode does, so the pixels do not change. Filling it
+         * answers zl_check_positions too (zl_cache_vertices), before any
+         * pixel is drawn. */
+        st = zl_cache_vertices(&src, (zl_cached_vertex *)ctx->vertex_cache, 0, mesh->vertex_count);
+        src.cache = (zl_cached_vertex *)ctx->vertex_cache;
+    } else {
+        st = zl_check_positions(mesh->positions, mesh->vertex_count, mvp);
     }
+    if (st != ZL_OK)
+        return st;
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
     plain = src.cache != NULL && plain_flat(ctx);
+    cull_sign = culled_area_sign(&ctx->state);
     for (t = 0; t < mesh->triangle_count; t++) {
         zl_tpoly tpoly; /* the texture attributes are only filled when the style needs them */
         zl_poly *poly = &tpoly.p;
-        if (plain && draw_cached(ctx, &src, t, &ss))
+        if (plain && draw_cached(ctx, &src, t, &ss, cull_sign))
             continue;
         if (!(planes ? zl_tri_polygon_tex(&src, &ctx->style, t, &tpoly)
                      : zl_tri_polygon_geom(&src, &ctx->style, t, poly)) ||

@@ -260,6 +260,12 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
 int zl_style_needs_planes(const zl_style *sty);
 /* Fill the span of row t->row into the given row buffers, then step t to the
  * next row. Returns 0 when the triangle has no rows left. */
+/* zl_tri_classify's bounds and zl_tri_setup_rows' record of a flat triangle
+ * from three cached vertices whose culling the caller settled; colour and
+ * light are the caller's. 1: set up; 0: not in the target; -1: beyond the
+ * 32-bit shortcuts, use the general setup. */
+int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                      const zl_cached_vertex *c, uint16_t width, uint16_t height);
 /* All rows of a flat triangle (frame mode, whole target): zl_tri_row's
  * pixels without its per-row record updates. */
 void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *color, int32_t color_stride,

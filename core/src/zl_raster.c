@@ -78,11 +78,11 @@ int zl_tri_classify(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, con
  * N fits 32 bits too (every edge of an on-screen triangle), the quotients
  * are 32-bit divisions and the remainders, which lie in [0, 16 dy), are
  * exact in wrapping 32-bit arithmetic. */
-static void edge_init(zl_edge *e, const zl_wvert *top, const zl_wvert *bot, int32_t j)
+static void edge_init_xy(zl_edge *e, int32_t xt, int32_t yt, int32_t xb, int32_t yb, int32_t j)
 {
-    int32_t dy = bot->y - top->y, dx = bot->x - top->x;
+    int32_t dy = yb - yt, dx = xb - xt;
     int32_t d = dy * ZL_SUB_ONE, dx16 = dx * ZL_SUB_ONE;
-    int64_t n = (int64_t)(top->x - ZL_SUB_HALF) * dy + (int64_t)(j * ZL_SUB_ONE + ZL_SUB_HALF - top->y) * dx;
+    int64_t n = (int64_t)(xt - ZL_SUB_HALF) * dy + (int64_t)(j * ZL_SUB_ONE + ZL_SUB_HALF - yt) * dx;
     int32_t q, step;
     if (n > INT32_MIN && n <= INT32_MAX) {
         int32_t n32 = (int32_t)n;
@@ -100,6 +100,11 @@ static void edge_init(zl_edge *e, const zl_wvert *top, const zl_wvert *bot, int3
     e->den = d;
     e->step = step;
     e->rstep = (int32_t)((uint32_t)dx16 - (uint32_t)step * (uint32_t)d);
+}
+
+static void edge_init(zl_edge *e, const zl_wvert *top, const zl_wvert *bot, int32_t j)
+{
+    edge_init_xy(e, top->x, top->y, bot->x, bot->y, j);
 }
 
 static void edge_step(zl_edge *e)
@@ -155,7 +160,90 @@ typedef struct {
     int64_t ox, oy;                /* anchor centre minus v0, subpixels */
     int32_t first;
     const zl_div_inv *inv;            /* reciprocal of |c|, or NULL when |c| >= 2^32 */
+    uint32_t c32;                  /* |c| when inv is set */
+    int small;                     /* every |dx|, |dy| below 2^17 (int16 vertices) */
 } plane_frame;
+
+/* A triangle's plane frame in 32 bits, for vertices within the int16 range
+ * (every cached vertex): edge vectors, anchor offsets and the reciprocal of
+ * |cross| (which must then be below 2^32). */
+typedef struct {
+    int32_t dx1, dy1, dx2, dy2; /* v1 - v0, v2 - v0 of the sorted vertices */
+    int32_t ox, oy;             /* anchor pixel centre minus v0, subpixels */
+    int32_t rows;               /* first row minus the anchor row */
+    int neg;                    /* the cross product is negative */
+    uint32_t c32;               /* |cross| */
+    zl_div_inv inv;
+} small_frame;
+
+/* round(x / c) as muldiv_pow2 rounds, by the frame's reciprocal; 0 when
+ * the quotient would not fit 32 bits (then the caller takes the long way). */
+static ZL_ALWAYS_INLINE int round_div_inv(int64_t x, const small_frame *f, int64_t *q)
+{
+    uint32_t c = f->c32, r;
+    uint64_t m = x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+    uint64_t num = x < 0 ? m + (c - 1u - c / 2u) : m + c / 2u;
+    if ((num >> 32) >= c)
+        return 0;
+    r = zl_div_inv_q(&f->inv, num);
+    *q = x < 0 ? -(int64_t)r : (int64_t)r;
+    return 1;
+}
+
+/*
+ * plane_setup's values in the common case: small vertices and value
+ * differences d1 = a1 - a0, d2 = a2 - a0 within 32 bits, so ga and gb are
+ * sums of two 32x32-bit products, every shifted numerator stays below 2^60,
+ * and quotients that fit 32 bits (far inside the limits: no saturation).
+ * Returns 0 without writing when a quotient does not fit.
+ */
+static ZL_NOINLINE int plane_small(zl_attr *at, const small_frame *f, int64_t a0, int32_t d1, int32_t d2)
+{
+    int64_t ga = (int64_t)d1 * f->dy2 - (int64_t)d2 * f->dy1;
+    int64_t gb = (int64_t)f->dx1 * d2 - (int64_t)f->dx2 * d1, dx, dy, off;
+    if (f->neg) {
+        ga = -ga;
+        gb = -gb;
+    }
+    if (!round_div_inv(ga * (1 << (ZL_SUB_BITS + ZL_ATTR_FRAC - 16)), f, &dx) ||
+        !round_div_inv(gb * (1 << (ZL_SUB_BITS + ZL_ATTR_FRAC - 16)), f, &dy) ||
+        !round_div_inv((ga * f->ox + gb * f->oy) * (1 << (ZL_ATTR_FRAC - 16)), f, &off))
+        return 0;
+    at->dx = dx;
+    at->dy = dy;
+    at->row = a0 * (1 << (ZL_ATTR_FRAC - 16)) + off + (int64_t)f->rows * dy;
+    return 1;
+}
+
+/* The difference a1 - a0 as 32 bits, or 0 when it does not fit. */
+static int diff32(int64_t a1, int64_t a0, int32_t *d)
+{
+    int64_t v = a1 - a0;
+    if (v < -INT32_MAX || v > INT32_MAX)
+        return 0;
+    *d = (int32_t)((uint32_t)a1 - (uint32_t)a0); /* the low words: 32x32 multiplies follow */
+    return 1;
+}
+
+/* plane_small for a general frame when its vertices are small. */
+static int plane_fast(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1, int64_t a2)
+{
+    small_frame f;
+    int32_t d1, d2;
+    if (pf->inv == NULL || !pf->small || !diff32(a1, a0, &d1) || !diff32(a2, a0, &d2))
+        return 0;
+    f.dx1 = (int32_t)pf->dx1;
+    f.dy1 = (int32_t)pf->dy1;
+    f.dx2 = (int32_t)pf->dx2;
+    f.dy2 = (int32_t)pf->dy2;
+    f.ox = (int32_t)pf->ox;
+    f.oy = (int32_t)pf->oy;
+    f.rows = pf->first - pf->ay;
+    f.neg = pf->c < 0;
+    f.c32 = pf->c32;
+    f.inv = *pf->inv;
+    return plane_small(at, &f, a0, d1, d2);
+}
 
 /* Attribute plane through values a0, a1, a2 (Q16) at the sorted vertices. */
 static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1, int64_t a2)
@@ -167,6 +255,8 @@ static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t 
     int64_t ga = da1 * pf->dy2 - da2 * pf->dy1;
     int64_t gb = pf->dx1 * da2 - pf->dx2 * da1;
     int64_t c = pf->c, base;
+    if (plane_fast(at, pf, a0, a1, a2))
+        return;
     if (c < 0) {
         c = -c;
         ga = -ga;
@@ -327,9 +417,12 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
     pf.c = cross;
     pf.inv = NULL;
     if (cross != 0 && cross >= -(int64_t)UINT32_MAX && cross <= (int64_t)UINT32_MAX) {
-        zl_div_inv_init(&inv, (uint32_t)(cross < 0 ? -cross : cross));
+        pf.c32 = (uint32_t)(cross < 0 ? -cross : cross);
+        zl_div_inv_init(&inv, pf.c32);
         pf.inv = &inv;
     }
+    pf.small = pf.dx1 > -(1 << 17) && pf.dx1 < (1 << 17) && pf.dy1 < (1 << 17) && pf.dx2 > -(1 << 17) &&
+               pf.dx2 < (1 << 17) && pf.dy2 < (1 << 17); /* dy >= 0: the vertices are sorted by y */
     pf.ax = (int32_t)zl_floor_shift64(v[0]->x, ZL_SUB_BITS);
     pf.ay = (int32_t)zl_floor_shift64(v[0]->y, ZL_SUB_BITS);
     pf.ox = (int64_t)pf.ax * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->x;
@@ -419,6 +512,169 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
 }
 
 /*
+ * Set up a flat triangle from three cached vertices (int16 window x, y):
+ * zl_tri_classify's row and column bounds and zl_tri_setup_rows' record, in
+ * 32-bit arithmetic, for a triangle whose culling the caller has settled
+ * (non-zero area, the visible side). Colour and light are the caller's.
+ * Returns 1 when set up, 0 when no row or column of it is in the target,
+ * and -1 when its numbers leave the 32-bit shortcuts (|cross| >= 2^32,
+ * depth differences beyond 2^31, a quotient beyond 32 bits): then the
+ * general setup must do it.
+ */
+int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                      const zl_cached_vertex *c, uint16_t width, uint16_t height)
+{
+    const zl_cached_vertex *v0 = a, *v1 = b, *v2 = c, *tmp;
+    int32_t first, end, mid, ax, ay, d1, d2;
+    int64_t cross;
+    small_frame f;
+    zl_edge upper;
+    /* the same comparisons as sort3, so the same order on ties */
+    if (v1->y < v0->y) {
+        tmp = v0;
+        v0 = v1;
+        v1 = tmp;
+    }
+    if (v2->y < v1->y) {
+        tmp = v1;
+        v1 = v2;
+        v2 = tmp;
+    }
+    if (v1->y < v0->y) {
+        tmp = v0;
+        v0 = v1;
+        v1 = tmp;
+    }
+    first = first_centre_at_or_after(v0->y);
+    end = first_centre_at_or_after(v2->y);
+    if (first < 0)
+        first = 0;
+    if (end > height)
+        end = height;
+    if (first >= end || first_centre_at_or_after(min3(a->x, b->x, c->x)) >= width ||
+        first_centre_at_or_after(max3(a->x, b->x, c->x)) <= 0)
+        return 0;
+    f.dx1 = v1->x - v0->x;
+    f.dy1 = v1->y - v0->y;
+    f.dx2 = v2->x - v0->x;
+    f.dy2 = v2->y - v0->y;
+    cross = (int64_t)f.dx1 * f.dy2 - (int64_t)f.dx2 * f.dy1;
+    if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !diff32(v1->z, v0->z, &d1) ||
+        !diff32(v2->z, v0->z, &d2))
+        return -1;
+    f.neg = cross < 0;
+    f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
+    ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
+    ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
+    f.ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
+    f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
+    f.rows = first - ay;
+    zl_div_inv_init(&f.inv, f.c32);
+    if (!plane_small(&t->z, &f, v0->z, d1, d2))
+        return -1;
+    mid = first_centre_at_or_after(v1->y);
+    mid = mid < first ? first : (mid > end ? end : mid);
+    t->kind = ZL_KIND_TRI;
+    t->row = (int16_t)first;
+    t->mid = (int16_t)mid;
+    t->end = (int16_t)end;
+    t->lower_is_left = (uint8_t)(cross <= 0);
+    edge_init_xy(cross > 0 ? &t->left : &t->right, v0->x, v0->y, v2->x, v2->y, first);
+    if (mid < end)
+        edge_init_xy(&t->lower, v1->x, v1->y, v2->x, v2->y, mid);
+    if (first < mid)
+        edge_init_xy(&upper, v0->x, v0->y, v1->x, v1->y, first);
+    else
+        upper = t->lower;
+    if (cross > 0)
+        t->right = upper;
+    else
+        t->left = upper;
+    t->ax = ax;
+    t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
+    t->zlo = v0->z < v1->z ? v0->z : v1->z;
+    t->zlo = v2->z < t->zlo ? v2->z : t->zlo;
+    t->zhi = v0->z > v1->z ? v0->z : v1->z;
+    t->zhi = v2->z > t->zhi ? v2->z : t->zhi;
+    return 1;
+}
+
+/* Spans up to this many pixels are filled in place by rows_flat_565; longer
+ * ones go to zl_span_flat, whose loops pay a set-up to run faster per pixel. */
+#define ZL_SHORT_SPAN 6
+
+/*
+ * The rows of a flat triangle in the common case: RGB565 (native order,
+ * aligned rows, every channel), depth test `func` (LESS or LEQUAL, a
+ * constant at each call) with depth writes. Short spans are written here,
+ * pixel by pixel exactly as zl_span_flat writes them (the depth clamp
+ * included); the loop keeps the edges' positions and errors in locals.
+ */
+static ZL_ALWAYS_INLINE void rows_flat_565(const zl_active *t, const zl_span_state *ss, unsigned func,
+                                           uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                           int32_t depth_stride, const uint8_t *pix)
+{
+    int32_t lx = t->left.x, lrem = t->left.rem, rx = t->right.x, rrem = t->right.rem;
+    const zl_edge *le = &t->left, *re = &t->right;
+    int32_t row = t->row, width = ss->width;
+    int64_t zrow = t->z.row;
+    uint32_t dz = t->dz14;
+    uint16_t pixel;
+    memcpy(&pixel, pix, 2);
+    color += (size_t)row * (size_t)color_stride;
+    depth += (size_t)row * (size_t)depth_stride;
+    for (;;) {
+        int32_t x0 = lx < 0 ? 0 : lx, x1 = rx > width ? width : rx, n = x1 - x0;
+        if (n > 0) {
+            uint16_t *c = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
+            uint32_t z = depth_start(t, zrow, x0);
+            if (n > ZL_SHORT_SPAN) {
+                zl_span_flat(ss, (uint8_t *)c, zb, n, z, dz, pix);
+            } else {
+                int32_t i;
+                for (i = 0; i < n; i++) {
+                    uint32_t d = depth_of(z);
+                    if (depth_pass(func, d, zb[i])) {
+                        zb[i] = (uint16_t)d;
+                        c[i] = pixel;
+                    }
+                    z += dz;
+                }
+            }
+        }
+        if (++row >= t->end)
+            return;
+        /* edge_step on the locals */
+        lx += le->step;
+        lrem -= le->rstep;
+        if (lrem < 0) {
+            lrem += le->den;
+            lx++;
+        }
+        rx += re->step;
+        rrem -= re->rstep;
+        if (rrem < 0) {
+            rrem += re->den;
+            rx++;
+        }
+        zrow += t->z.dy;
+        color += color_stride;
+        depth += depth_stride;
+        if (row == t->mid) {
+            if (t->lower_is_left) {
+                le = &t->lower;
+                lx = le->x;
+                lrem = le->rem;
+            } else {
+                re = &t->lower;
+                rx = re->x;
+                rrem = re->rem;
+            }
+        }
+    }
+}
+
+/*
  * Every row of a flat-shaded triangle into a whole target (frame mode): the
  * same spans as zl_tri_row row by row, with the edges and the depth row in
  * locals, so a row costs its span and two edge steps. The record is left
@@ -436,6 +692,17 @@ void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *colo
     if ((color == NULL && bpp != 0) || (depth == NULL && (ss->zwrite || ss->func != ZL_ALWAYS)))
         return; /* as in row_span */
     pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
+    if (color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && bpp == 2 && ss->zwrite &&
+        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)color & 1u) == 0 && (color_stride & 1) == 0) {
+        if (ss->func == ZL_LESS) {
+            rows_flat_565(t, ss, ZL_LESS, color, color_stride, depth, depth_stride, pix);
+            return;
+        }
+        if (ss->func == ZL_LEQUAL) {
+            rows_flat_565(t, ss, ZL_LEQUAL, color, color_stride, depth, depth_stride, pix);
+            return;
+        }
+    }
     if (color != NULL)
         color += (size_t)row * (size_t)color_stride;
     if (depth != NULL)

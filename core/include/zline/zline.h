@@ -503,7 +503,9 @@ typedef struct {
     /* Optional vertex cache for zl_draw_mesh (NULL after zl_init): with at
      * least ZL_VERTEX_CACHE_BYTES(mesh->vertex_count) bytes, 4-byte aligned,
      * each vertex is transformed once per draw instead of once per triangle
-     * that uses it (the same pixels either way). A smaller cache is not used. */
+     * that uses it (the same pixels either way). A smaller cache is not used.
+     * The cache is scratch: a draw that fails (ZL_ERR_RANGE) may have written
+     * it, never the target. */
     void *vertex_cache;
     size_t vertex_cache_bytes;
 } zl_context;
