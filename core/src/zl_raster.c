@@ -599,6 +599,17 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
     return 1;
 }
 
+/* depth_start's value from the plane value v at the span start: the clamp
+ * moved after the shift (floor division is monotone, so clamping v to
+ * [zlo 16, zhi 16] and then shifting equals shifting and then clamping to
+ * [zlo / 4, zhi / 4]), so it is 32-bit work whenever v is in range. */
+static ZL_ALWAYS_INLINE uint32_t depth_start_shifted(int64_t v, uint32_t lo14, uint32_t hi14)
+{
+    int64_t w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
+    uint32_t z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
+    return (z < lo14 ? lo14 : z) + (1u << 13);
+}
+
 /* Spans up to this many pixels are filled in place by rows_flat_565; longer
  * ones go to zl_span_flat, whose loops pay a set-up to run faster per pixel. */
 #define ZL_SHORT_SPAN 6
@@ -612,13 +623,13 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
  */
 static ZL_ALWAYS_INLINE void rows_flat_565(const zl_active *t, const zl_span_state *ss, unsigned func,
                                            uint8_t *color, int32_t color_stride, uint8_t *depth,
-                                           int32_t depth_stride, const uint8_t *pix)
+                                           int32_t depth_stride, const uint8_t *pix, int32_t dx32)
 {
     int32_t lx = t->left.x, lrem = t->left.rem, rx = t->right.x, rrem = t->right.rem;
     const zl_edge *le = &t->left, *re = &t->right;
     int32_t row = t->row, width = ss->width;
     int64_t zrow = t->z.row;
-    uint32_t dz = t->dz14;
+    uint32_t dz = t->dz14, lo14 = t->zlo >> 2, hi14 = t->zhi >> 2; /* the clamp range after the shift */
     uint16_t pixel;
     memcpy(&pixel, pix, 2);
     color += (size_t)row * (size_t)color_stride;
@@ -627,7 +638,7 @@ static ZL_ALWAYS_INLINE void rows_flat_565(const zl_active *t, const zl_span_sta
         int32_t x0 = lx < 0 ? 0 : lx, x1 = rx > width ? width : rx, n = x1 - x0;
         if (n > 0) {
             uint16_t *c = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
-            uint32_t z = depth_start(t, zrow, x0);
+            uint32_t z = depth_start_shifted(zrow + (int64_t)(x0 - t->ax) * dx32, lo14, hi14);
             if (n > ZL_SHORT_SPAN) {
                 zl_span_flat(ss, (uint8_t *)c, zb, n, z, dz, pix);
             } else {
@@ -693,13 +704,14 @@ void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *colo
         return; /* as in row_span */
     pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
     if (color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && bpp == 2 && ss->zwrite &&
-        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)color & 1u) == 0 && (color_stride & 1) == 0) {
+        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)color & 1u) == 0 && (color_stride & 1) == 0 &&
+        t->z.dx >= INT32_MIN && t->z.dx <= INT32_MAX) {
         if (ss->func == ZL_LESS) {
-            rows_flat_565(t, ss, ZL_LESS, color, color_stride, depth, depth_stride, pix);
+            rows_flat_565(t, ss, ZL_LESS, color, color_stride, depth, depth_stride, pix, (int32_t)t->z.dx);
             return;
         }
         if (ss->func == ZL_LEQUAL) {
-            rows_flat_565(t, ss, ZL_LEQUAL, color, color_stride, depth, depth_stride, pix);
+            rows_flat_565(t, ss, ZL_LEQUAL, color, color_stride, depth, depth_stride, pix, (int32_t)t->z.dx);
             return;
         }
     }

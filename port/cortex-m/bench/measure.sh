@@ -120,6 +120,16 @@ for s in $scenes; do
     done
 done
 echo
+echo "### Summary, Cortex-M4 -O2 (README)"
+echo
+echo "| scene | frame mode | frame mode + vertex cache | scanline mode | per pixel written (frame + cache) | rasterisation per pixel (frame) | cycles, frame + cache (ESTIMATE) |"
+echo "|---|---:|---:|---:|---:|---:|---:|"
+for s in $scenes; do
+    tc=$(get frame-O2 $s total_vcache); px=$(get frame-O2 $s pixels)
+    raster=$(( $(get frame-O2 $s v3_rows) - $(get frame-O2 $s v2_setup) ))
+    echo "| $s | $(num "$(get frame-O2 $s total)") | $(num "$tc") | $(num "$(get scanline-O2 $s total)") | $(div "$tc" "$px") | $(div "$raster" "$px") | $(num "$(get frame-O2 $s total_vcache_cycles)") |"
+done
+echo
 echo "### Frame mode with the optional vertex cache (ctx.vertex_cache: each vertex transformed once)"
 echo
 echo "| scene | opt | instructions per frame | without the cache | vertex cache RAM (bytes) |"

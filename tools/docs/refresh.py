@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
+
+    python3 tools/docs/refresh.py [--cortex-m BUILD_DIR]
+
+Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
+KEY=total_vcache), splits their output into sections ("### title" plus the markdown table
+under it) and, in every document:
+  * replaces the table under a heading "### title" with the table of the section of that
+    title (profile headings match up to their " (" suffix, which names marks that move);
+  * replaces the table after a line "<!-- measured: title -->" the same way;
+  * replaces the instruction column of the README's visibility table (rows mapped below).
+Nothing else in a document changes; prose that quotes a figure must be edited by hand
+(grep for the old value). Prints what it replaced.
+"""
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DOCS = ["README.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md"]
+# README visibility table row -> bench_vis.c method
+VIS_ROWS = {
+    "z-buffer, frame mode": "zbuffer",
+    "z-buffer, scanline mode": "scanline",
+    "scan-line AET (no depth buffer)": "aet",
+    "painter's (sort by farthest vertex)": "painter",
+    "BSP, back to front": "bsp-b2f",
+    "ray caster (the reference)": "raycast",
+}
+
+
+def run(cmd, env=None):
+    e = dict(os.environ)
+    e.update(env or {})
+    out = subprocess.run(cmd, cwd=ROOT, env=e, check=True, capture_output=True, text=True).stdout
+    return out
+
+
+def key_of(title):
+    """Profile headings end in ' (bench_..., marks I..J)': match without it."""
+    return re.sub(r" \(bench_[^)]*\)$", "", title.strip())
+
+
+def sections(text):
+    """{key: table lines} for every '### title' followed by a table."""
+    found, title, lines = {}, None, text.splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("### "):
+            title = key_of(line[4:])
+        elif title and line.startswith("|"):
+            j = i
+            while j < len(lines) and lines[j].startswith("|"):
+                j += 1
+            found.setdefault(title, lines[i:j])
+            title = None
+    return found
+
+
+def replace_table(lines, start, table):
+    """Replace the first table at or after line index start; returns the new lines."""
+    i = start
+    while i < len(lines) and not lines[i].startswith("|"):
+        if lines[i].startswith("#") and i > start:
+            return lines  # no table before the next heading
+        i += 1
+    j = i
+    while j < len(lines) and lines[j].startswith("|"):
+        j += 1
+    return lines[:i] + table + lines[j:]
+
+
+def refresh(doc, secs, vis):
+    path = os.path.join(ROOT, doc)
+    lines = open(path).read().split("\n")
+    done = []
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        key = None
+        if line.startswith("### "):
+            key = key_of(line[4:])
+        m = re.match(r"<!-- measured: (.*) -->$", line)
+        if m:
+            key = m.group(1).strip()
+        if key in secs:
+            lines = replace_table(lines, i + 1, secs[key])
+            done.append(key)
+        i += 1
+    for n, line in enumerate(lines):
+        cells = [c.strip() for c in line.split("|")]
+        if doc == "README.md" and len(cells) > 4 and cells[1] in VIS_ROWS and vis.get(VIS_ROWS[cells[1]]):
+            cells[3] = vis[VIS_ROWS[cells[1]]]
+            lines[n] = "| " + " | ".join(cells[1:-1]) + " |"
+    open(path, "w").write("\n".join(lines))
+    print(f"{doc}: {len(done)} tables: " + "; ".join(done))
+
+
+def main():
+    build = "build/cortex-m4-bench"
+    if len(sys.argv) == 3 and sys.argv[1] == "--cortex-m":
+        build = sys.argv[2]
+    text = run(["sh", "port/cortex-m/bench/measure.sh", build])
+    text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
+    vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
+    vc = vc.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")
+    text += "\n" + vc
+    secs = sections(text)
+    vis = {}
+    for row in secs.get("Visibility methods on Cortex-M4 (bunny, -O2)", [])[2:]:
+        cells = [c.strip() for c in row.split("|")]
+        vis[cells[1]] = cells[2]
+    for doc in DOCS:
+        refresh(doc, secs, vis)
+
+
+if __name__ == "__main__":
+    main()
