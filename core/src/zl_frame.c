@@ -23,15 +23,21 @@
 #include <string.h>
 
 #include "zl_internal.h"
+#include "zl_span.h"
 
 struct zl_frame_mesh {
     zl_mesh mesh;
     zl_mat4 mvp;
     zl_state state;
     zl_span_state span;
-    uint8_t has_mvp;
+    uint8_t flags;      /* MESH_*, in bytes that were padding: the layout does not change */
+    int8_t cull_sign;   /* culled_area_sign of the state */
     uint32_t tri_base, vert_base;
 };
+
+#define MESH_MVP 1u       /* mvp holds the transform (else pixel space) */
+#define MESH_FLAT 2u      /* plain flat fill: cached triangles set up by zl_tri_setup_flat */
+#define MESH_ROW565 4u    /* MESH_FLAT with RGB565 spans, depth LESS or LEQUAL written, every channel */
 
 /* Per-mesh record of the styled features (only with cfg.styled). */
 typedef struct {
@@ -161,6 +167,41 @@ static void set_ext(zl_frame *f, unsigned mi, const zl_style *style, const zl_li
     }
 }
 
+/* The sign of the window-space area (zl_tri_classify's) of the triangles the
+ * state culls: y grows down, so a negative area is counter-clockwise on
+ * screen. 0 when neither side is culled by area alone. */
+static int culled_area_sign(const zl_state *st)
+{
+    int front_sign = st->front_face == ZL_FRONT_CCW ? -1 : 1;
+    if (st->cull == ZL_CULL_BACK)
+        return -front_sign;
+    if (st->cull == ZL_CULL_FRONT)
+        return front_sign;
+    return 0;
+}
+
+/* MESH_FLAT and MESH_ROW565 of a mesh record (sty: its style, NULL for the
+ * default): a flat fill without polygon modes, offset, toon bands, texture
+ * or perspective planes is one zl_tri_setup_flat record per cached
+ * triangle (as frame mode's draw_cached), and its rows may take the RGB565
+ * loop of render_row_plain. */
+static unsigned mesh_flags(const zl_frame_mesh *m, const zl_style *sty)
+{
+    const zl_span_state *ss = &m->span;
+    unsigned flags;
+    if (m->state.shading != ZL_SHADE_FLAT)
+        return 0;
+    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL ||
+                        sty->offset_factor != 0 || sty->offset_units != 0 || sty->toon_bands != 0 ||
+                        zl_style_needs_planes(sty)))
+        return 0;
+    flags = MESH_FLAT;
+    if (ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+        (ss->func == ZL_LESS || ss->func == ZL_LEQUAL))
+        flags |= MESH_ROW565;
+    return flags;
+}
+
 static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
                             const zl_style *style, const zl_lines *lines, const zl_mesh *omesh,
                             const zl_outline *outline)
@@ -188,7 +229,6 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
         return ZL_ERR_CAPACITY;
     m = &f->meshes[f->mesh_count];
     m->mesh = *mesh;
-    m->has_mvp = mvp != NULL;
     if (mvp != NULL)
         m->mvp = *mvp;
     m->state = *state;
@@ -196,6 +236,9 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     m->tri_base = f->triangle_total;
     m->vert_base = f->vertex_count;
     set_ext(f, f->mesh_count, style, lines, omesh, outline);
+    m->flags = (uint8_t)((lines == NULL && outline == NULL ? mesh_flags(m, style_of(f, f->mesh_count)) : 0u) |
+                         (mvp != NULL ? MESH_MVP : 0u));
+    m->cull_sign = (int8_t)culled_area_sign(state);
     f->mesh_count++;
     f->vertex_count += mesh->vertex_count;
     f->triangle_total += mesh->triangle_count;
@@ -266,7 +309,7 @@ static zl_cached_vertex *cache_of(const zl_frame *f)
 static void source_of(const zl_frame *f, const zl_frame_mesh *m, zl_source *s)
 {
     s->mesh = &m->mesh;
-    s->mvp = m->has_mvp ? &m->mvp : NULL;
+    s->mvp = (m->flags & MESH_MVP) ? &m->mvp : NULL;
     s->state = &m->state;
     s->cache = cache_of(f) + m->vert_base;
     s->width = f->cfg.width;
@@ -284,13 +327,13 @@ static int prim_record(const zl_frame *f, unsigned mi, const zl_source *s, uint3
 
 static void fill_cache(zl_frame *f)
 {
-    uint16_t mi, v;
+    uint16_t mi;
     for (mi = 0; mi < f->mesh_count; mi++) {
         const zl_frame_mesh *m = &f->meshes[mi];
         zl_source s;
         source_of(f, m, &s);
-        for (v = 0; v < m->mesh.vertex_count; v++)
-            cache_of(f)[m->vert_base + v] = zl_cache_vertex(&s, v);
+        /* add_record checked the transform limits: the status is ZL_OK */
+        (void)zl_cache_vertices(&s, cache_of(f) + m->vert_base, 0, m->mesh.vertex_count);
     }
 }
 
@@ -371,16 +414,72 @@ static ZL_NOINLINE void classify_pieces(zl_frame *f, plan_pass *p, const zl_fram
     }
 }
 
+/* The index of the first row (or column) whose centre is at or after
+ * subpixel coordinate v (zl_raster.c's first_centre_at_or_after). */
+static int32_t centre_at_or_after(int32_t v)
+{
+    return zl_floor_shift32(v - ZL_SUB_HALF + ZL_SUB_ONE - 1, ZL_SUB_BITS);
+}
+
+/* zl_tri_classify of a triangle whose three vertices are cached inside the
+ * clip volume (then its polygon is the triangle itself, one piece): the
+ * same area test, row range and column test, on the int16 coordinates
+ * (whose products fit 64 bits). cull_sign: culled_area_sign. */
+static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                            const zl_cached_vertex *c, int cull_sign, uint16_t width,
+                                            uint16_t height, int32_t *first, int32_t *end)
+{
+    int32_t ymin = a->y, ymax = a->y, xmin = a->x, xmax = a->x;
+    int64_t p = (int64_t)(b->x - a->x) * (c->y - a->y), q = (int64_t)(c->x - a->x) * (b->y - a->y);
+    if (p == q || (p < q ? -1 : 1) == cull_sign)
+        return 0;
+    if (b->y < ymin)
+        ymin = b->y;
+    if (b->y > ymax)
+        ymax = b->y;
+    if (c->y < ymin)
+        ymin = c->y;
+    if (c->y > ymax)
+        ymax = c->y;
+    *first = centre_at_or_after(ymin);
+    *end = centre_at_or_after(ymax);
+    if (*first < 0)
+        *first = 0;
+    if (*end > height)
+        *end = height;
+    if (*first >= *end)
+        return 0;
+    if (b->x < xmin)
+        xmin = b->x;
+    if (b->x > xmax)
+        xmax = b->x;
+    if (c->x < xmin)
+        xmin = c->x;
+    if (c->x > xmax)
+        xmax = c->x;
+    return centre_at_or_after(xmin) < width && centre_at_or_after(xmax) > 0;
+}
+
 /* Filled triangles: the row range of every fan triangle of the polygon. */
 static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
                           const zl_style *sty)
 {
     uint16_t w = f->cfg.width, h = f->cfg.height;
     uint32_t t, count = m->mesh.triangle_count;
-    for (t = 0; t < count; t++) {
+    const uint16_t *idx = m->mesh.indices;
+    const zl_cached_vertex *cache = s->cache;
+    int cull_sign = m->cull_sign;
+    for (t = 0; t < count; t++, idx += 3) {
         zl_poly poly;
         unsigned k, pieces = 0;
         int32_t first = INT16_MAX, end = 0;
+        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        if (c0->x > ZL_CACHE_INVALID && c1->x > ZL_CACHE_INVALID && c2->x > ZL_CACHE_INVALID) {
+            /* inside: zl_tri_polygon_geom would copy the three vertices */
+            if (classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
+                note(f, p, m->tri_base + t, first, end, 1);
+            continue;
+        }
         if (!zl_tri_polygon_geom(s, sty, t, &poly))
             continue;
         for (k = 1; k + 1 < poly.n; k++) {
@@ -616,6 +715,51 @@ static ZL_NOINLINE void render_row_styled(zl_frame *f, uint16_t y, uint16_t i, u
     }
 }
 
+/* The general setup of a cached triangle zl_tri_setup_flat could not take
+ * (its numbers beyond 32 bits), as frame mode's setup_general: 0 when it
+ * has no rows in the target (planning found some, so never). */
+static ZL_NOINLINE int setup_general(const zl_frame_mesh *m, const zl_source *s, const zl_cached_vertex *const *c,
+                                     zl_poly *poly, zl_active *a)
+{
+    int32_t first, end;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        poly->v[k].x = c[k]->x;
+        poly->v[k].y = c[k]->y;
+        poly->v[k].z = c[k]->z;
+        poly->v[k].r = 0; /* vertex colours only matter to Gouraud shading */
+        poly->v[k].g = 0;
+        poly->v[k].b = 0;
+    }
+    poly->n = 3;
+    if (!zl_tri_classify(&poly->v[0], &poly->v[1], &poly->v[2], &m->state, s->width, s->height, &first, &end))
+        return 0;
+    zl_tri_setup_rows(a, NULL, NULL, NULL, &poly->v[0], &poly->v[1], &poly->v[2], poly, &m->state, first, end);
+    return 1;
+}
+
+/* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
+ * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
+ * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
+ * frame mode's draw_cached does. Returns 0 when it has no rows (never). */
+static int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t, const zl_cached_vertex *const *c,
+                        zl_active *a)
+{
+    zl_poly poly;
+    int set = zl_tri_setup_flat(a, c[0], c[1], c[2], s->width, s->height);
+    if (set == 0)
+        return 0;
+    poly.n = 0; /* flat: no vertex colours for the lighting to scale */
+    if (set < 0 && !setup_general(m, s, c, &poly, a))
+        return 0;
+    zl_tri_shade(s, t, &poly);
+    a->rgb[0] = poly.flat.r;
+    a->rgb[1] = poly.flat.g;
+    a->rgb[2] = poly.flat.b;
+    a->light = poly.light;
+    return 1;
+}
+
 /* activate() without style records: a filled triangle, no texture planes. */
 static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
 {
@@ -626,6 +770,28 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
     zl_poly poly;
     unsigned k, n;
     source_of(f, m, &s);
+    if (m->flags & MESH_FLAT) {
+        const uint16_t *idx = &m->mesh.indices[t * 3u];
+        const zl_cached_vertex *c[3];
+        c[0] = &s.cache[idx[0]];
+        c[1] = &s.cache[idx[1]];
+        c[2] = &s.cache[idx[2]];
+        if (c[0]->x > ZL_CACHE_INVALID && c[1]->x > ZL_CACHE_INVALID && c[2]->x > ZL_CACHE_INVALID) {
+            uint16_t slot = f->free_head;
+            zl_active *a;
+            if (slot == ZL_LIST_END)
+                return; /* cannot happen: planning bounded the peak */
+            a = &f->pool[slot];
+            if (!setup_cached(m, &s, t, c, a))
+                return;
+            f->free_head = a->next;
+            a->id = id;
+            a->mesh = mi;
+            a->next = *link;
+            *link = slot;
+            return;
+        }
+    }
     if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
         return;
     zl_tri_shade(&s, t, &poly);
@@ -647,6 +813,79 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
     }
 }
 
+/* zl_raster.c's edge_step. */
+static ZL_ALWAYS_INLINE void edge_step(zl_edge *e)
+{
+    e->x += e->step;
+    e->rem -= e->rstep;
+    if (e->rem < 0) {
+        e->rem += e->den;
+        e->x += 1;
+    }
+}
+
+/* Spans up to this many pixels are written in place by row_565; longer ones
+ * go to zl_span_flat (zl_raster.c's ZL_SHORT_SPAN). */
+#define SHORT_SPAN 6
+
+/*
+ * zl_tri_row of a flat triangle record of a MESH_ROW565 mesh into the
+ * band's row buffers (both present, 2-byte aligned), depth test `func`
+ * (ZL_LESS or ZL_LEQUAL, a constant at each call): the same span (row_span:
+ * depth_start's clamped plane value; a short span pixel by pixel as
+ * zl_span_flat writes it) and the same steps.
+ */
+static ZL_ALWAYS_INLINE int row_565(zl_active *a, const zl_span_state *ss, unsigned func, uint8_t *crow,
+                                    uint16_t *zrow)
+{
+    int32_t x0 = a->left.x < 0 ? 0 : a->left.x, x1 = a->right.x > ss->width ? ss->width : a->right.x;
+    int32_t n = x1 - x0, row;
+    if (n > 0) {
+        const int64_t lo = (int64_t)a->zlo << (ZL_ATTR_FRAC - 16), hi = (int64_t)a->zhi << (ZL_ATTR_FRAC - 16);
+        int64_t v;
+        uint32_t z, dz = a->dz14;
+        uint16_t pixel = (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
+                                    (unsigned)(a->rgb[2] >> 3));
+        if (a->z.dx >= INT32_MIN && a->z.dx <= INT32_MAX)
+            v = a->z.row + (int64_t)(int32_t)a->z.dx * (x0 - a->ax);
+        else
+            v = a->z.row + (int64_t)(x0 - a->ax) * a->z.dx;
+        v = v < lo ? lo : (v > hi ? hi : v);
+        z = (uint32_t)((uint64_t)v >> (ZL_ATTR_FRAC - 14)) + (1u << 13);
+        if (n > SHORT_SPAN) {
+            uint8_t pix[3];
+            memcpy(pix, &pixel, 2); /* pack_color's native RGB565 */
+            pix[2] = 0;
+            zl_span_flat(ss, crow + (size_t)x0 * 2u, zrow + x0, n, z, dz, pix);
+        } else {
+            uint16_t *c = (uint16_t *)(void *)crow + x0, *zb = zrow + x0;
+            int32_t k;
+            for (k = 0; k < n; k++) {
+                uint32_t d = depth_of(z);
+                if (depth_pass(func, d, zb[k])) {
+                    zb[k] = (uint16_t)d;
+                    c[k] = pixel;
+                }
+                z += dz;
+            }
+        }
+    }
+    edge_step(&a->left);
+    edge_step(&a->right);
+    a->z.row += a->z.dy;
+    row = a->row + 1;
+    a->row = (int16_t)row;
+    if (row >= a->end)
+        return 0;
+    if (row == a->mid) {
+        if (a->lower_is_left)
+            a->left = a->lower;
+        else
+            a->right = a->lower;
+    }
+    return 1;
+}
+
 /* render_row_styled() without style records: every record is a filled
  * triangle without texture planes (add_record refuses anything else). */
 static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
@@ -660,6 +899,8 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
     for (;;) {
         uint16_t slot = *link;
         zl_active *a;
+        const zl_frame_mesh *m;
+        int more;
         if (i < end && (slot == ZL_LIST_END || pool[slot].id > visible[i])) {
             activate_plain(f, visible[i++], link);
             continue;
@@ -667,12 +908,21 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
         if (slot == ZL_LIST_END)
             break;
         a = &pool[slot];
-        /* a->row != y: a later piece of a clipped triangle, not started */
-        if (a->row == y &&
-            !zl_tri_row(a, gouraud != NULL ? gouraud + slot : NULL, &meshes[a->mesh].span, crow, zrow))
-            retire(f, link, a, slot);
-        else
+        if (a->row != y) { /* a later piece of a clipped triangle, not started */
             link = &a->next;
+            continue;
+        }
+        m = &meshes[a->mesh];
+        if (!(m->flags & MESH_ROW565))
+            more = zl_tri_row(a, gouraud != NULL ? gouraud + slot : NULL, &m->span, crow, zrow);
+        else if (m->span.func == ZL_LESS)
+            more = row_565(a, &m->span, ZL_LESS, crow, zrow);
+        else
+            more = row_565(a, &m->span, ZL_LEQUAL, crow, zrow);
+        if (more)
+            link = &a->next;
+        else
+            retire(f, link, a, slot);
     }
 }
 
