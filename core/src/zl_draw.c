@@ -1,5 +1,8 @@
 /* Immediate (frame) mode: draw meshes straight into a full target. */
+#include <string.h>
+
 #include "zl_internal.h"
+#include "zl_span.h"
 
 /* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
 typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
@@ -197,7 +200,7 @@ static ZL_NOINLINE int setup_general(const zl_context *ctx, const zl_source *src
  * the general path draws the triangle.
  */
 static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
-                       int cull_sign)
+                       int cull_sign, int tiny)
 {
     const uint16_t *idx = &src->mesh->indices[t * 3u];
     const zl_cached_vertex *c0 = &src->cache[idx[0]], *c1 = &src->cache[idx[1]], *c2 = &src->cache[idx[2]];
@@ -215,10 +218,27 @@ static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, 
            (int64_t)((int32_t)c2->x - c0->x) * ((int32_t)c1->y - c0->y);
     if (area == 0 || (area < 0 ? -1 : 1) == cull_sign)
         return 1;
+    poly.n = 0; /* flat: no vertex colours for the lighting to scale */
+    if (tiny) {
+        /* the common case: no record at all (zl_tiny_draw) */
+        zl_tiny tt;
+        set = zl_tiny_setup(&tt, c0, c1, c2, src->width, src->height);
+        if (set == 0)
+            return 1;
+        if (set > 0) {
+            uint8_t pix[3] = {0, 0, 0};
+            uint16_t pixel;
+            zl_tri_shade(src, t, &poly);
+            pack_color(ZL_FORMAT_RGB565, poly.flat.r, poly.flat.g, poly.flat.b, pix);
+            memcpy(&pixel, pix, 2);
+            zl_tiny_draw(&tt, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride, (uint8_t *)ctx->target.depth,
+                         ctx->target.depth_stride, pixel);
+            return 1;
+        }
+    }
     set = zl_tri_setup_flat(&tri, c0, c1, c2, src->width, src->height);
     if (set == 0)
         return 1;
-    poly.n = 0; /* flat: no vertex colours for the lighting to scale */
     if (set < 0 && !setup_general(ctx, src, idx, &poly, &tri))
         return 1;
     zl_tri_shade(src, t, &poly);
@@ -274,7 +294,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
-    int planes, plain, cull_sign;
+    int planes, plain, cull_sign, tiny;
     st = check_context(ctx);
     if (st == ZL_OK)
         st = zl_check_mesh(mesh, mvp == NULL);
@@ -299,10 +319,11 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     planes = zl_style_needs_planes(&ctx->style);
     plain = src.cache != NULL && plain_flat(ctx);
     cull_sign = culled_area_sign(&ctx->state);
+    tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
     for (t = 0; t < mesh->triangle_count; t++) {
         zl_tpoly tpoly; /* the texture attributes are only filled when the style needs them */
         zl_poly *poly = &tpoly.p;
-        if (plain && draw_cached(ctx, &src, t, &ss, cull_sign))
+        if (plain && draw_cached(ctx, &src, t, &ss, cull_sign, tiny))
             continue;
         if (!(planes ? zl_tri_polygon_tex(&src, &ctx->style, t, &tpoly)
                      : zl_tri_polygon_geom(&src, &ctx->style, t, poly)) ||

@@ -266,6 +266,30 @@ int zl_style_needs_planes(const zl_style *sty);
  * 32-bit shortcuts, use the general setup. */
 int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
                       const zl_cached_vertex *c, uint16_t width, uint16_t height);
+/* A small flat triangle for frame mode, without a zl_active (zl_raster.c):
+ * edges evaluated per row as ceil(n / d), n advancing by inc per row. */
+typedef struct {
+    int32_t n, inc, d;
+} zl_tiny_edge;
+typedef struct {
+    zl_tiny_edge lng, up, low; /* v0-v2, v0-v1 (rows first..mid), v1-v2 (rows mid..end) */
+    int64_t zrow, zdy;         /* depth plane, Q20: value at (ax, first), change per row */
+    int32_t zdx;               /* change per pixel (it fits 32 bits here) */
+    uint32_t dz14, lo14, hi14; /* span stepper and clamp range, Q14 */
+    int32_t ax, first, mid, end;
+    int long_left;             /* the long edge bounds the spans on the left */
+} zl_tiny;
+/* zl_tri_setup_flat's bounds and numbers as a zl_tiny: 1 set up, 0 not in
+ * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
+int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                  uint16_t width, uint16_t height);
+/* Whether zl_tiny_draw can write this target: RGB565, aligned rows, every
+ * channel, depth LESS or LEQUAL with writes. */
+int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth);
+/* Draw a zl_tiny_setup triangle with one packed RGB565 pixel: exactly the
+ * pixels zl_tri_rows_flat writes for the same triangle. */
+void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, int32_t color_stride, uint8_t *depth,
+                  int32_t depth_stride, uint16_t pixel);
 /* All rows of a flat triangle (frame mode, whole target): zl_tri_row's
  * pixels without its per-row record updates. */
 void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *color, int32_t color_stride,

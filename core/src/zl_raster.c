@@ -225,6 +225,18 @@ static int diff32(int64_t a1, int64_t a0, int32_t *d)
     return 1;
 }
 
+/* diff32 of two depths (uint32, Q16) in 32-bit arithmetic: the wrapped
+ * difference is the true one exactly when its sign agrees with the
+ * comparison. */
+static ZL_ALWAYS_INLINE int depth_diff32(uint32_t a1, uint32_t a0, int32_t *d)
+{
+    int32_t v = (int32_t)(a1 - a0);
+    if ((a1 >= a0) != (v >= 0) || v == INT32_MIN)
+        return 0;
+    *d = v;
+    return 1;
+}
+
 /* plane_small for a general frame when its vertices are small. */
 static int plane_fast(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1, int64_t a2)
 {
@@ -559,8 +571,8 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
     f.dx2 = v2->x - v0->x;
     f.dy2 = v2->y - v0->y;
     cross = (int64_t)f.dx1 * f.dy2 - (int64_t)f.dx2 * f.dy1;
-    if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !diff32(v1->z, v0->z, &d1) ||
-        !diff32(v2->z, v0->z, &d2))
+    if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
+        !depth_diff32(v2->z, v0->z, &d2))
         return -1;
     f.neg = cross < 0;
     f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
@@ -610,9 +622,197 @@ static ZL_ALWAYS_INLINE uint32_t depth_start_shifted(int64_t v, uint32_t lo14, u
     return (z < lo14 ? lo14 : z) + (1u << 13);
 }
 
-/* Spans up to this many pixels are filled in place by rows_flat_565; longer
- * ones go to zl_span_flat, whose loops pay a set-up to run faster per pixel. */
+/* ---------------------------------------- small flat triangles, frame mode */
+
+/* Spans up to this many pixels are filled in place by the row loops below;
+ * longer ones go to zl_span_flat, whose loops pay a set-up to run faster
+ * per pixel. */
 #define ZL_SHORT_SPAN 6
+
+/*
+ * A cached flat triangle drawn without a zl_active record, for the common
+ * frame-mode case: every number of it fits 32 bits. Its edges are not
+ * stepped by the DDA of zl_edge but evaluated per row, x(j) = ceil(N(j) /
+ * D) with N(j) = N(first) + (j - first) 16 dx: the same quotient the DDA
+ * keeps, from one division, and a set-up of three numbers per edge instead
+ * of two divisions and two products. For the small triangles of a real mesh
+ * (a few rows each) that is the cheaper side of the trade.
+ */
+/* The edge from (xt, yt) down to (xb, yb) from row j0 on. The caller has
+ * checked the triangle's bound (zl_tiny_setup), so N fits 32 bits. */
+static ZL_ALWAYS_INLINE void tiny_edge_init(zl_tiny_edge *e, int32_t xt, int32_t yt, int32_t xb, int32_t yb,
+                                            int32_t j0)
+{
+    int32_t dy = yb - yt, dx = xb - xt;
+    e->n = (xt - ZL_SUB_HALF) * dy + (j0 * ZL_SUB_ONE + ZL_SUB_HALF - yt) * dx;
+    e->inc = dx * ZL_SUB_ONE;
+    e->d = dy * ZL_SUB_ONE;
+}
+
+/* ceil(n / d), d > 0: C division truncates, which is the ceiling below 0. */
+static ZL_ALWAYS_INLINE int32_t tiny_x(int32_t n, int32_t d)
+{
+    int32_t q = n / d;
+    return q * d < n ? q + 1 : q;
+}
+
+int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                  uint16_t width, uint16_t height)
+{
+    const zl_cached_vertex *v0 = a, *v1 = b, *v2 = c, *tmp;
+    int32_t first, end, mid, ay, d1, d2, cross;
+    small_frame f;
+    zl_attr z;
+    /* the same comparisons as sort3, so the same order on ties */
+    if (v1->y < v0->y) {
+        tmp = v0;
+        v0 = v1;
+        v1 = tmp;
+    }
+    if (v2->y < v1->y) {
+        tmp = v1;
+        v1 = v2;
+        v2 = tmp;
+    }
+    if (v1->y < v0->y) {
+        tmp = v0;
+        v0 = v1;
+        v1 = tmp;
+    }
+    first = first_centre_at_or_after(v0->y);
+    end = first_centre_at_or_after(v2->y);
+    if (first < 0)
+        first = 0;
+    if (end > height)
+        end = height;
+    if (first >= end || first_centre_at_or_after(min3(a->x, b->x, c->x)) >= width ||
+        first_centre_at_or_after(max3(a->x, b->x, c->x)) <= 0)
+        return 0;
+    f.dx1 = v1->x - v0->x;
+    f.dy1 = v1->y - v0->y;
+    f.dx2 = v2->x - v0->x;
+    f.dy2 = v2->y - v0->y;
+    mid = first_centre_at_or_after(v1->y);
+    mid = mid < first ? first : (mid > end ? end : mid);
+    /* Every |x| below 2^13 and a height below 2^13 subpixels: then each edge's
+     * N = (xt - 8) dy + (16 j + 8 - yt) dx, on its rows, stays below
+     * 2^13 (2^13 + 8 + 2^14) < 2^28 in magnitude, the cross product below
+     * 2^29, and 32-bit arithmetic is exact. */
+    if (a->x <= -8192 || a->x >= 8192 || b->x <= -8192 || b->x >= 8192 || c->x <= -8192 || c->x >= 8192 ||
+        f.dy2 >= 8192 || !depth_diff32(v1->z, v0->z, &d1) || !depth_diff32(v2->z, v0->z, &d2))
+        return -1;
+    tiny_edge_init(&tt->lng, v0->x, v0->y, v2->x, v2->y, first);
+    tiny_edge_init(&tt->up, v0->x, v0->y, v1->x, v1->y, first);
+    tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
+    cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
+    f.neg = cross < 0;
+    f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
+    tt->ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
+    ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
+    f.ox = tt->ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
+    f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
+    f.rows = first - ay;
+    zl_div_inv_init(&f.inv, f.c32);
+    if (!plane_small(&z, &f, v0->z, d1, d2) || z.dx < INT32_MIN || z.dx > INT32_MAX)
+        return -1;
+    tt->zrow = z.row;
+    tt->zdy = z.dy;
+    tt->zdx = (int32_t)z.dx;
+    tt->dz14 = step32(z.dx, ZL_ATTR_FRAC - 14);
+    tt->lo14 = (v0->z < v1->z ? (v0->z < v2->z ? v0->z : v2->z) : (v1->z < v2->z ? v1->z : v2->z)) >> 2;
+    tt->hi14 = (v0->z > v1->z ? (v0->z > v2->z ? v0->z : v2->z) : (v1->z > v2->z ? v1->z : v2->z)) >> 2;
+    tt->first = first;
+    tt->mid = mid;
+    tt->end = end;
+    tt->long_left = cross > 0;
+    return 1;
+}
+
+/* Rows [j, j_end) between the long edge and one short edge (RGB565, depth
+ * test func with writes); returns the long edge's N after them. */
+static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state *ss, unsigned func, int long_left,
+                                          int32_t j,
+                                          int32_t j_end, int32_t nl, const zl_tiny_edge *se, uint8_t *color,
+                                          int32_t color_stride, uint8_t *depth, int32_t depth_stride,
+                                          uint16_t pixel, int64_t *zrow)
+{
+    const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
+    int32_t ns = se->n;
+    int64_t zr = *zrow;
+    color += (size_t)j * (size_t)color_stride;
+    depth += (size_t)j * (size_t)depth_stride;
+    for (; j < j_end; j++) {
+        int32_t xa = tiny_x(nl, dl), xb = tiny_x(ns, ds);
+        int32_t x0 = long_left ? xa : xb, x1 = long_left ? xb : xa;
+        x0 = x0 < 0 ? 0 : x0;
+        x1 = x1 > width ? width : x1;
+        if (x0 < x1) {
+            uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
+            uint32_t zq = depth_start_shifted(zr + (int64_t)(x0 - tt->ax) * tt->zdx, tt->lo14, tt->hi14);
+            int32_t i, n = x1 - x0;
+            if (n > ZL_SHORT_SPAN) {
+                uint8_t pix[2];
+                memcpy(pix, &pixel, 2);
+                zl_span_flat(ss, (uint8_t *)cp, zb, n, zq, tt->dz14, pix);
+            } else {
+                for (i = 0; i < n; i++) {
+                    uint32_t d = depth_of(zq);
+                    if (depth_pass(func, d, zb[i])) {
+                        zb[i] = (uint16_t)d;
+                        cp[i] = pixel;
+                    }
+                    zq += tt->dz14;
+                }
+            }
+        }
+        nl += il;
+        ns += is;
+        zr += tt->zdy;
+        color += color_stride;
+        depth += depth_stride;
+    }
+    *zrow = zr;
+    return nl;
+}
+
+static ZL_ALWAYS_INLINE void tiny_draw(const zl_tiny *tt, const zl_span_state *ss, unsigned func, int long_left,
+                                       uint8_t *color, int32_t color_stride, uint8_t *depth, int32_t depth_stride,
+                                       uint16_t pixel)
+{
+    int64_t zrow = tt->zrow;
+    int32_t nl = tt->lng.n;
+    if (tt->first < tt->mid)
+        nl = tiny_rows(tt, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
+                       depth_stride, pixel, &zrow);
+    if (tt->mid < tt->end)
+        (void)tiny_rows(tt, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
+                        depth_stride, pixel, &zrow);
+}
+
+void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, int32_t color_stride, uint8_t *depth,
+                  int32_t depth_stride, uint16_t pixel)
+{
+    /* func and the side of the long edge as constants: four loops */
+    if (ss->func == ZL_LESS) {
+        if (tt->long_left)
+            tiny_draw(tt, ss, ZL_LESS, 1, color, color_stride, depth, depth_stride, pixel);
+        else
+            tiny_draw(tt, ss, ZL_LESS, 0, color, color_stride, depth, depth_stride, pixel);
+    } else {
+        if (tt->long_left)
+            tiny_draw(tt, ss, ZL_LEQUAL, 1, color, color_stride, depth, depth_stride, pixel);
+        else
+            tiny_draw(tt, ss, ZL_LEQUAL, 0, color, color_stride, depth, depth_stride, pixel);
+    }
+}
+
+int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth)
+{
+    return color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
+           ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)color & 1u) == 0 && (color_stride & 1) == 0 &&
+           (ss->func == ZL_LESS || ss->func == ZL_LEQUAL);
+}
+
 
 /*
  * The rows of a flat triangle in the common case: RGB565 (native order,

@@ -11,7 +11,7 @@
 #include "zl_internal.h"
 
 /* Memory bytes of colour c in a format (2 or 3 of them). */
-static void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, uint8_t out[3])
+static inline void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, uint8_t out[3])
 {
     if (f == ZL_FORMAT_RGB888) {
         out[0] = (uint8_t)r;
