@@ -824,56 +824,61 @@ static ZL_ALWAYS_INLINE void edge_step(zl_edge *e)
     }
 }
 
-/* Spans up to this many pixels are written in place by row_565; longer ones
+/* Spans up to this many pixels are written in place by span_565; longer ones
  * go to zl_span_flat (zl_raster.c's ZL_SHORT_SPAN). */
 #define SHORT_SPAN 6
 
 /*
- * zl_tri_row of a flat triangle record of a MESH_ROW565 mesh into the
- * band's row buffers (both present, 2-byte aligned), depth test `func`
- * (ZL_LESS or ZL_LEQUAL, a constant at each call): the same span (row_span:
- * depth_start's clamped plane value; a short span pixel by pixel as
- * zl_span_flat writes it) and the same steps.
+ * row_span of a flat triangle record of a MESH_ROW565 mesh, columns
+ * [x0, x1) (clipped to the row, x0 < x1) of the band's row buffers (both
+ * present, 2-byte aligned), depth test `func` (ZL_LESS or ZL_LEQUAL, a
+ * constant at each call): depth_start's clamped plane value, with the clamp
+ * after the shift (floor division is monotone, so clamping to [zlo 16,
+ * zhi 16] and then shifting equals shifting and then clamping to [zlo / 4,
+ * zhi / 4]); a short span pixel by pixel as zl_span_flat writes it.
  */
-static ZL_ALWAYS_INLINE int row_565(zl_active *a, const zl_span_state *ss, unsigned func, uint8_t *crow,
-                                    uint16_t *zrow)
+static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *ss, unsigned func, uint8_t *crow,
+                                      uint16_t *zrow, int32_t x0, int32_t x1)
 {
-    int32_t x0 = a->left.x < 0 ? 0 : a->left.x, x1 = a->right.x > ss->width ? ss->width : a->right.x;
-    int32_t n = x1 - x0, row;
-    if (n > 0) {
-        const int64_t lo = (int64_t)a->zlo << (ZL_ATTR_FRAC - 16), hi = (int64_t)a->zhi << (ZL_ATTR_FRAC - 16);
-        int64_t v;
-        uint32_t z, dz = a->dz14;
-        uint16_t pixel = (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
-                                    (unsigned)(a->rgb[2] >> 3));
-        if (a->z.dx >= INT32_MIN && a->z.dx <= INT32_MAX)
-            v = a->z.row + (int64_t)(int32_t)a->z.dx * (x0 - a->ax);
-        else
-            v = a->z.row + (int64_t)(x0 - a->ax) * a->z.dx;
-        v = v < lo ? lo : (v > hi ? hi : v);
-        z = (uint32_t)((uint64_t)v >> (ZL_ATTR_FRAC - 14)) + (1u << 13);
-        if (n > SHORT_SPAN) {
-            uint8_t pix[3];
-            memcpy(pix, &pixel, 2); /* pack_color's native RGB565 */
-            pix[2] = 0;
-            zl_span_flat(ss, crow + (size_t)x0 * 2u, zrow + x0, n, z, dz, pix);
-        } else {
-            uint16_t *c = (uint16_t *)(void *)crow + x0, *zb = zrow + x0;
-            int32_t k;
-            for (k = 0; k < n; k++) {
-                uint32_t d = depth_of(z);
-                if (depth_pass(func, d, zb[k])) {
-                    zb[k] = (uint16_t)d;
-                    c[k] = pixel;
-                }
-                z += dz;
-            }
-        }
+    int32_t n = x1 - x0, k;
+    int64_t v, w;
+    uint32_t z, dz = a->dz14, lo14 = a->zlo >> 2, hi14 = a->zhi >> 2;
+    uint16_t pixel = (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
+                                (unsigned)(a->rgb[2] >> 3));
+    uint16_t *c, *zb;
+    if (a->z.dx >= INT32_MIN && a->z.dx <= INT32_MAX)
+        v = a->z.row + (int64_t)(int32_t)a->z.dx * (x0 - a->ax);
+    else
+        v = a->z.row + (int64_t)(x0 - a->ax) * a->z.dx;
+    w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
+    z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
+    z = (z < lo14 ? lo14 : z) + (1u << 13);
+    if (n > SHORT_SPAN) {
+        uint8_t pix[3];
+        memcpy(pix, &pixel, 2); /* pack_color's native RGB565 */
+        pix[2] = 0;
+        zl_span_flat(ss, crow + (size_t)x0 * 2u, zrow + x0, n, z, dz, pix);
+        return;
     }
+    c = (uint16_t *)(void *)crow + x0;
+    zb = zrow + x0;
+    for (k = 0; k < n; k++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zb[k])) {
+            zb[k] = (uint16_t)d;
+            c[k] = pixel;
+        }
+        z += dz;
+    }
+}
+
+/* zl_tri_row's steps after the span: 0 when the record has no rows left. */
+static ZL_ALWAYS_INLINE int row_step(zl_active *a)
+{
+    int32_t row = a->row + 1;
     edge_step(&a->left);
     edge_step(&a->right);
     a->z.row += a->z.dy;
-    row = a->row + 1;
     a->row = (int16_t)row;
     if (row >= a->end)
         return 0;
@@ -884,6 +889,56 @@ static ZL_ALWAYS_INLINE int row_565(zl_active *a, const zl_span_state *ss, unsig
             a->right = a->lower;
     }
     return 1;
+}
+
+/*
+ * render_row_plain() when every mesh is MESH_ROW565 with depth test `func`
+ * (then all their span states are the same): the walk with each record's
+ * span and steps in line.
+ */
+static ZL_ALWAYS_INLINE void rows_565(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                      uint16_t *zrow, unsigned func)
+{
+    uint16_t *link = &f->active_head;
+    zl_active *pool = f->pool;
+    const uint16_t *visible = f->visible;
+    const zl_span_state *ss = &f->meshes[0].span;
+    for (;;) {
+        uint16_t slot = *link;
+        zl_active *a;
+        int32_t x0, x1;
+        if (i < end && (slot == ZL_LIST_END || pool[slot].id > visible[i])) {
+            activate_plain(f, visible[i++], link);
+            continue;
+        }
+        if (slot == ZL_LIST_END)
+            break;
+        a = &pool[slot];
+        if (a->row != y) { /* a later piece of a clipped triangle, not started */
+            link = &a->next;
+            continue;
+        }
+        x0 = a->left.x < 0 ? 0 : a->left.x;
+        x1 = a->right.x > ss->width ? ss->width : a->right.x;
+        if (x0 < x1)
+            span_565(a, ss, func, crow, zrow, x0, x1);
+        if (row_step(a))
+            link = &a->next;
+        else
+            retire(f, link, a, slot);
+    }
+}
+
+static ZL_NOINLINE void render_row_less(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                        uint16_t *zrow)
+{
+    rows_565(f, y, i, end, crow, zrow, ZL_LESS);
+}
+
+static ZL_NOINLINE void render_row_lequal(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                          uint16_t *zrow)
+{
+    rows_565(f, y, i, end, crow, zrow, ZL_LEQUAL);
 }
 
 /* render_row_styled() without style records: every record is a filled
@@ -913,12 +968,18 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
             continue;
         }
         m = &meshes[a->mesh];
-        if (!(m->flags & MESH_ROW565))
+        if (m->flags & MESH_ROW565) {
+            int32_t x0 = a->left.x < 0 ? 0 : a->left.x, x1 = a->right.x > m->span.width ? m->span.width : a->right.x;
+            if (x0 < x1) {
+                if (m->span.func == ZL_LESS)
+                    span_565(a, &m->span, ZL_LESS, crow, zrow, x0, x1);
+                else
+                    span_565(a, &m->span, ZL_LEQUAL, crow, zrow, x0, x1);
+            }
+            more = row_step(a);
+        } else {
             more = zl_tri_row(a, gouraud != NULL ? gouraud + slot : NULL, &m->span, crow, zrow);
-        else if (m->span.func == ZL_LESS)
-            more = row_565(a, &m->span, ZL_LESS, crow, zrow);
-        else
-            more = row_565(a, &m->span, ZL_LEQUAL, crow, zrow);
+        }
         if (more)
             link = &a->next;
         else
@@ -929,10 +990,27 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
 static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
 {
     uint16_t i = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y];
-    if (f->ext != NULL)
+    unsigned mi, flags = 0, func = 0;
+    if (f->ext != NULL) {
         render_row_styled(f, y, i, end, crow, zrow);
-    else
+        return;
+    }
+    /* Every mesh MESH_ROW565 with the same depth test: the walk in line. */
+    if (f->mesh_count != 0) {
+        flags = MESH_ROW565;
+        func = f->meshes[0].span.func;
+    }
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        flags &= f->meshes[mi].flags;
+        if (f->meshes[mi].span.func != func)
+            flags = 0;
+    }
+    if (flags == 0)
         render_row_plain(f, y, i, end, crow, zrow);
+    else if (func == ZL_LESS)
+        render_row_less(f, y, i, end, crow, zrow);
+    else
+        render_row_lequal(f, y, i, end, crow, zrow);
 }
 
 zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
