@@ -2,7 +2,9 @@
  * Scanline and band mode: the whole frame a band of rows at a time.
  *
  * Planning (first zl_frame_next_band):
- *   1. every vertex is transformed once into the vertex cache;
+ *   1. every vertex is transformed once into the vertex cache (a mesh with a
+ *      matrix already when it is added: filling the cache answers the
+ *      transform limits there);
  *   2. every triangle is classified once (culling, clipping, row range) and
  *      its first row counted; a difference array over rows bounds how many
  *      triangles are active at once, so capacity errors come before any pixel;
@@ -38,6 +40,7 @@ struct zl_frame_mesh {
 #define MESH_MVP 1u       /* mvp holds the transform (else pixel space) */
 #define MESH_FLAT 2u      /* plain flat fill: cached triangles set up by zl_tri_setup_flat */
 #define MESH_ROW565 4u    /* MESH_FLAT with RGB565 spans, depth LESS or LEQUAL written, every channel */
+#define MESH_CACHED 8u    /* its vertex cache entries were filled when it was added */
 
 /* Per-mesh record of the styled features (only with cfg.styled). */
 typedef struct {
@@ -202,16 +205,46 @@ static unsigned mesh_flags(const zl_frame_mesh *m, const zl_style *sty)
     return flags;
 }
 
+static zl_cached_vertex *cache_of(const zl_frame *f)
+{
+    return (zl_cached_vertex *)(void *)f->vcache;
+}
+
+/* zl_check_geometry, with the transform limits answered by transforming the
+ * vertices into the mesh's vertex cache entries when a matrix is given and
+ * they fit (zl_cache_vertices fails exactly when zl_check_positions does);
+ * *cached tells whether it did, so planning need not transform them. */
+static zl_status check_and_cache(const zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
+                                 int *cached)
+{
+    zl_status st = zl_check_mesh(mesh, mvp == NULL);
+    zl_source s;
+    *cached = 0;
+    if (st != ZL_OK)
+        return st;
+    if (mvp == NULL || mesh->vertex_count == 0 || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices)
+        return zl_check_positions(mesh->positions, mesh->vertex_count, mvp);
+    s.mesh = mesh;
+    s.mvp = mvp;
+    s.state = state;
+    s.cache = NULL;
+    s.width = f->cfg.width;
+    s.height = f->cfg.height;
+    *cached = 1;
+    return zl_cache_vertices(&s, cache_of(f) + f->vertex_count, 0, mesh->vertex_count);
+}
+
 static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *state,
                             const zl_style *style, const zl_lines *lines, const zl_mesh *omesh,
                             const zl_outline *outline)
 {
     zl_frame_mesh *m;
     zl_status st = ZL_OK;
+    int cached = 0;
     if (f == NULL || state == NULL || f->planned)
         return ZL_ERR_ARG;
     if (lines == NULL && outline == NULL)
-        st = zl_check_geometry(mesh, mvp);
+        st = check_and_cache(f, mesh, mvp, state, &cached);
     if (st == ZL_OK)
         st = zl_state_check(state);
     if (st == ZL_OK && style != NULL)
@@ -237,7 +270,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     m->vert_base = f->vertex_count;
     set_ext(f, f->mesh_count, style, lines, omesh, outline);
     m->flags = (uint8_t)((lines == NULL && outline == NULL ? mesh_flags(m, style_of(f, f->mesh_count)) : 0u) |
-                         (mvp != NULL ? MESH_MVP : 0u));
+                         (mvp != NULL ? MESH_MVP : 0u) | (cached ? MESH_CACHED : 0u));
     m->cull_sign = (int8_t)culled_area_sign(state);
     f->mesh_count++;
     f->vertex_count += mesh->vertex_count;
@@ -301,11 +334,6 @@ zl_status zl_frame_add_outlines(zl_frame *f, const zl_mesh *mesh, const zl_mat4 
     return add_record(f, &m, mvp, state, style, NULL, mesh, outline);
 }
 
-static zl_cached_vertex *cache_of(const zl_frame *f)
-{
-    return (zl_cached_vertex *)(void *)f->vcache;
-}
-
 static void source_of(const zl_frame *f, const zl_frame_mesh *m, zl_source *s)
 {
     s->mesh = &m->mesh;
@@ -333,7 +361,8 @@ static void fill_cache(zl_frame *f)
         zl_source s;
         source_of(f, m, &s);
         /* add_record checked the transform limits: the status is ZL_OK */
-        (void)zl_cache_vertices(&s, cache_of(f) + m->vert_base, 0, m->mesh.vertex_count);
+        if (!(m->flags & MESH_CACHED) && m->mesh.vertex_count != 0)
+            (void)zl_cache_vertices(&s, cache_of(f) + m->vert_base, 0, m->mesh.vertex_count);
     }
 }
 
