@@ -489,41 +489,73 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
     return centre_at_or_after(xmin) < width && centre_at_or_after(xmax) > 0;
 }
 
-/* Filled triangles: the row range of every fan triangle of the polygon. */
+/* Filled triangle t that needs clipping (or is dropped): the row range of
+ * every fan triangle of its polygon. Out of line, so the polygon is not on
+ * the stack (nor in the registers) of the loop below. */
+static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                         const zl_style *sty, uint32_t t)
+{
+    zl_poly poly;
+    unsigned k, pieces = 0;
+    int32_t first = INT16_MAX, end = 0;
+    if (!zl_tri_polygon_geom(s, sty, t, &poly))
+        return;
+    for (k = 1; k + 1 < poly.n; k++) {
+        int32_t a, b;
+        if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, s->width, s->height, &a, &b))
+            continue;
+        pieces++;
+        if (a < first)
+            first = a;
+        if (b > end)
+            end = b;
+    }
+    if (pieces != 0)
+        note(f, p, m->tri_base + t, first, end, pieces);
+}
+
+/* Filled triangles: the row range of every fan triangle of the polygon;
+ * a triangle with its three vertices cached inside is its own polygon, one
+ * piece, classified on the cache (and noted here with the counters in
+ * locals: note's work for one piece). */
 static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
-                          const zl_style *sty)
+                                      const zl_style *sty)
 {
     uint16_t w = f->cfg.width, h = f->cfg.height;
-    uint32_t t, count = m->mesh.triangle_count;
+    uint32_t t, count = m->mesh.triangle_count, n = p->n, id = m->tri_base;
+    uint32_t max_visible = f->cfg.max_triangles, na = p->na, nkeys = p->na + p->nb;
     const uint16_t *idx = m->mesh.indices;
     const zl_cached_vertex *cache = s->cache;
+    uint16_t *row_start = f->row_start, *visible = f->visible;
+    int32_t *diff = p->diff;
     int cull_sign = m->cull_sign;
-    for (t = 0; t < count; t++, idx += 3) {
-        zl_poly poly;
-        unsigned k, pieces = 0;
-        int32_t first = INT16_MAX, end = 0;
+    for (t = 0; t < count; t++, id++, idx += 3) {
+        int32_t first, end;
         const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
-        if (c0->x > ZL_CACHE_INVALID && c1->x > ZL_CACHE_INVALID && c2->x > ZL_CACHE_INVALID) {
-            /* inside: zl_tri_polygon_geom would copy the three vertices */
-            if (classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
-                note(f, p, m->tri_base + t, first, end, 1);
+        if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
+            p->n = n;
+            classify_polygon(f, p, m, s, sty, t);
+            n = p->n;
             continue;
         }
-        if (!zl_tri_polygon_geom(s, sty, t, &poly))
+        if (!classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
             continue;
-        for (k = 1; k + 1 < poly.n; k++) {
-            int32_t a, b;
-            if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, w, h, &a, &b))
-                continue;
-            pieces++;
-            if (a < first)
-                first = a;
-            if (b > end)
-                end = b;
+        if (diff == NULL) {
+            visible[row_start[first]++] = (uint16_t)id;
+        } else {
+            row_start[first]++;
+            diff[first] += 1;
+            diff[end] -= 1;
+            if (n < max_visible)
+                visible[n] = (uint16_t)id;
+            if (n < na)
+                p->key_a[n] = (uint16_t)first;
+            else if (n < nkeys)
+                p->key_b[n - na] = (uint16_t)first;
         }
-        if (pieces != 0)
-            note(f, p, m->tri_base + t, first, end, pieces);
+        n++;
     }
+    p->n = n;
 }
 
 /* One pass over every primitive of every mesh; returns the visible ones. */
@@ -1047,8 +1079,8 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
     uint16_t rows, r, w;
     size_t bpp;
     uint8_t *color;
-    zl_span_state clear;
-    zl_state full;
+    uint8_t pix[3] = {0, 0, 0};
+    uint16_t pix16;
     if (f == NULL || band == NULL)
         return ZL_ERR_ARG;
     if (!f->planned) {
@@ -1065,12 +1097,20 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
     if (rows > f->cfg.band_rows)
         rows = f->cfg.band_rows;
     color = f->color_band[f->band_index];
-    zl_state_default(&full);
-    zl_span_state_init(&clear, &full, 1, 1, (zl_format)f->cfg.format, w);
+    /* The clear colour in the band's format, every channel written (what
+     * zl_fill_color_row does with the default state's span settings). */
+    pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
+    memcpy(&pix16, pix, 2);
     for (r = 0; r < rows; r++) {
         uint8_t *crow = color + (size_t)r * w * bpp;
         uint16_t *zrow = f->depth_band + (size_t)r * w;
-        zl_fill_color_row(crow, &clear, f->clear_color);
+        if (bpp == 2) { /* rows of an 8-byte aligned band, an even number of bytes apart */
+            zl_fill16((uint16_t *)(void *)crow, pix16, w);
+        } else {
+            uint16_t i;
+            for (i = 0; i < w; i++)
+                memcpy(crow + (size_t)i * 3u, pix, 3);
+        }
         zl_fill16(zrow, f->clear_depth, w);
         render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
     }
