@@ -386,6 +386,74 @@ static void test_cache_edges(void)
     }
 }
 
+/* The fast path's bound on positions (the largest power of two P that keeps
+ * every row of the transform inside Q16.16): rows whose worst case is near
+ * 2^47, positions at and around every power of two and its negative. */
+static void test_cache_position_bound(void)
+{
+    unsigned draw, k, j;
+    for (draw = 0; draw < 600u; draw++) {
+        zl_mat4 m;
+        zl_fixed p[3];
+        unsigned row = draw % 4u;
+        /* |m0| + |m1| + |m2| near a power of two, translation near its limit */
+        int32_t big = (int32_t)((1u << (draw % 31u)) - 1u + rnd32() % 3u);
+        zl_mat4_identity(&m);
+        m.m[14] = ZL_FX_ONE;
+        m.m[15] = ZL_FX_ONE / 2 + (zl_fixed)(rnd32() % 65536u);
+        m.m[row * 4] = clamp_lim((rnd32() & 1u) ? big : -big);
+        m.m[row * 4 + 1] = clamp_lim((int32_t)(rnd32() >> (1u + rnd32() % 31u)) * ((rnd32() & 1u) ? 1 : -1));
+        m.m[row * 4 + 2] = clamp_lim((rnd32() & 1u) ? big / 3 : -(big / 2));
+        m.m[row * 4 + 3] = (rnd32() & 1u) ? clamp_lim((int32_t)(rnd32() >> (rnd32() % 32u)) - (int32_t)(rnd32() >> 1))
+                                          : (zl_fixed)(rnd32() % 9u) - 4;
+        for (k = 0; k <= 30u; k++) {
+            for (j = 0; j < 8u; j++) {
+                int32_t e = (int32_t)(1u << k), v = (j & 1u) ? -e : e;
+                v = (int32_t)((uint32_t)v + (uint32_t)((int32_t)(j >> 1) - 1)); /* -1, 0, +1, +2 around it */
+                p[0] = clamp_lim(v);
+                p[1] = (j & 4u) ? clamp_lim(-(int64_t)v) : p[0] / 3;
+                p[2] = (rnd32() & 1u) ? p[0] : (zl_fixed)(rnd32() % 65536u);
+                check_one(&m, p, (uint16_t)(1u + rnd32() % 640u), (uint16_t)(1u + rnd32() % 480u));
+            }
+        }
+    }
+}
+
+/* The depth of zl_project (the vertex cache's division too) where its
+ * long division changes: w around 2^20, z at 0, 1, w / 2, w - 1, w. */
+static void test_depth_edges(void)
+{
+    static const int32_t ws[] = {1, 2, 3, 255, 256, 4095, 4096, 65535, 65536, 65537, 0xFFFFF - 1, 0xFFFFF,
+                                 0x100000, 0x100001, 0x7FFFFFF, 0x3FFFFFFF, 0x40000000, INT32_MAX};
+    unsigned k, j;
+    for (k = 0; k < sizeof ws / sizeof ws[0]; k++) {
+        int64_t w = ws[k];
+        int64_t zs[7];
+        zs[0] = 0;
+        zs[1] = 1;
+        zs[2] = w / 2;
+        zs[3] = (w + 1) / 2;
+        zs[4] = w - 1;
+        zs[5] = w;
+        zs[6] = (int64_t)(rnd32() % (uint32_t)w);
+        for (j = 0; j < 7u; j++) {
+            zl_mat4 m;
+            zl_source s = {0};
+            zl_cvert v = {0, 0, 0, 0, 0, 0, 0};
+            zl_wvert out;
+            int64_t z = zs[j] > w ? w : zs[j];
+            zl_mat4_identity(&m);
+            s.mvp = &m;
+            s.width = 64;
+            s.height = 48;
+            v.w = (int32_t)w;
+            v.z = (int32_t)z;
+            zl_project(&s, &v, &out);
+            TEST_ASSERT_EQUAL_UINT32((uint32_t)(z * 65535 / w * 65536 + round_div(z * 65535 % w * 65536, w)), out.z);
+        }
+    }
+}
+
 /* zl_project on any clip vertex (the clipping path's, slightly off the
  * planes too) against the 64-bit formulas. */
 static void test_project_matches_64bit_formulas(void)
@@ -598,6 +666,8 @@ int main(void)
     RUN_TEST(test_udiv_random_numerators);
     RUN_TEST(test_cache_matches_64bit_formulas);
     RUN_TEST(test_cache_edges);
+    RUN_TEST(test_cache_position_bound);
+    RUN_TEST(test_depth_edges);
     RUN_TEST(test_project_matches_64bit_formulas);
     RUN_TEST(test_lighting_matches_64bit_definition);
     RUN_TEST(test_isqrt32_squares);

@@ -129,11 +129,33 @@ static int32_t round_div_w(int64_t n, int32_t w)
     return (int32_t)zl_floor_div64(m, w);
 }
 
-/* round(z / w * 65535 * 65536) for 0 <= z <= w, w >= 1: one 64/32 division
- * (z * (2^32 - 2^16) + w/2 < w * 2^32, so the quotient fits 32 bits). */
-static uint32_t depth_q16(uint32_t z, uint32_t w)
+/*
+ * round(z / w * 65535 * 65536) for 0 <= z <= w, w >= 1: the 64/32 division
+ * of n = z * (2^32 - 2^16) + w/2 < w * 2^32 (so the quotient fits 32 bits).
+ * For w below 2^20 (clip w below 16.0, most scenes) it is schoolbook long
+ * division in digits of 12, 12 and 8 bits: every partial remainder is below
+ * w, so remainder * 2^12 plus the next digit fits 32 bits and each digit is
+ * one 32-bit division, no correction step. Where division is a library call
+ * (Cortex-M0) the general 64/32 division is used throughout.
+ */
+static ZL_ALWAYS_INLINE uint32_t depth_q16(uint32_t z, uint32_t w)
 {
-    return udiv_small((uint64_t)z * 0xFFFF0000u + (w >> 1), w);
+    uint64_t n = ((uint64_t)z << 32) - ((uint64_t)z << 16) + (w >> 1); /* shifts: no multiply */
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+    if (w < (1u << 20)) {
+        uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r, q2, q1, q0;
+        r = (hi << 12) | (lo >> 20); /* hi < w */
+        q2 = r / w;
+        r -= q2 * w;
+        r = (r << 12) | ((lo >> 8) & 0xFFFu);
+        q1 = r / w;
+        r -= q1 * w;
+        r = (r << 8) | (lo & 0xFFu);
+        q0 = r / w;
+        return (q2 << 20) | (q1 << 8) | q0;
+    }
+#endif
+    return udiv_small(n, w);
 }
 
 void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
@@ -192,17 +214,50 @@ static zl_cached_vertex cache_vertex_generic(const zl_source *s, uint16_t idx)
 #define COORD_LIMIT ((uint32_t)1 << 30) /* zl_matrix.c's limit: +-16384.0 */
 
 typedef struct {
-    const zl_fixed *m;   /* the matrix; every entry within +-COORD_LIMIT */
+    zl_fixed m[16];      /* the matrix (a copy: no reloads after each store); every entry within +-COORD_LIMIT */
     int64_t bias[4];     /* translation column * 2^16 + 2^15: rounding folded in */
     uint32_t wd, ht;     /* viewport */
     uint32_t gx, gy;     /* W + 2G, H + 2G: the guard-band planes */
     uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
+    uint32_t pfast;      /* P: positions within [-P, P) need no range checks */
+    uint32_t qx, qy;     /* window quotients below these are inside and in range */
 } vx_setup;
 
 /* |v| <= 2^30, the coordinate and matrix entry limit, in one compare. */
 static int in_limit(zl_fixed v)
 {
     return (uint32_t)v + COORD_LIMIT <= 2u * COORD_LIMIT;
+}
+
+static uint32_t abs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+/* min(a, b) where b may be negative (then 0). */
+static uint32_t limit_below(uint32_t a, int32_t b)
+{
+    return b <= 0 ? 0u : ((uint32_t)b < a ? (uint32_t)b : a);
+}
+
+/*
+ * The largest power of two P <= 2^30 (or 0) such that no row of the
+ * transform can leave Q16.16 for a position with every |coordinate| <= P:
+ * with S = |m0| + |m1| + |m2| (below 2^32), |acc| <= S P + |bias| < 2^47.
+ */
+static uint32_t fast_bound(const vx_setup *vs)
+{
+    const int64_t lim = (int64_t)1 << 47;
+    uint32_t p = COORD_LIMIT;
+    int r;
+    for (r = 0; r < 4; r++) {
+        const zl_fixed *m = &vs->m[r * 4];
+        uint64_t sum = (uint64_t)abs32(m[0]) + abs32(m[1]) + abs32(m[2]);
+        int64_t b = vs->bias[r] < 0 ? -vs->bias[r] : vs->bias[r]; /* below 2^47 */
+        while (p != 0 && (int64_t)(sum * p) >= lim - b)
+            p >>= 1;
+    }
+    return p;
 }
 
 /* 0 when a matrix entry is out of range: then every vertex is invalid. */
@@ -213,7 +268,8 @@ static int vx_prepare(const zl_source *s, vx_setup *vs)
     for (k = 0; k < 16; k++)
         if (!in_limit(m[k]))
             return 0;
-    vs->m = m;
+    for (k = 0; k < 16; k++)
+        vs->m[k] = m[k];
     for (k = 0; k < 4; k++)
         vs->bias[k] = (int64_t)m[k * 4 + 3] * ZL_FX_ONE + 32768;
     vs->wd = s->width;
@@ -222,6 +278,14 @@ static int vx_prepare(const zl_source *s, vx_setup *vs)
     vs->gy = s->height + 2u * ZL_GUARD_PX;
     vs->hx = s->width * (uint32_t)(ZL_SUB_ONE / 2);
     vs->hy = s->height * (uint32_t)(ZL_SUB_ONE / 2);
+    vs->pfast = fast_bound(vs);
+    /* See vx_fast: x inside its planes and window x in [INT16_MIN + 2,
+     * INT16_MAX] when q < hx + G 2^SUB and q < 32767 - hx; y likewise with
+     * [INT16_MIN, INT16_MAX]. */
+    vs->qx = limit_below(vs->hx + (uint32_t)ZL_GUARD_PX * ZL_SUB_ONE, 32767 - (int32_t)vs->hx);
+    vs->qy = limit_below(vs->hy + (uint32_t)ZL_GUARD_PX * ZL_SUB_ONE, 32768 - (int32_t)vs->hy);
+    if (ZL_SUB_ONE < 2)
+        vs->qx = vs->qy = 0; /* h is not W 2^SUB / 2 then: no fast path */
     return 1;
 }
 
@@ -266,7 +330,7 @@ static int32_t vx_window(uint32_t h, int32_t c, int neg, uint32_t w)
     return neg ? (int32_t)h - (int32_t)q : (int32_t)(h + q);
 }
 
-static zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed *p)
+static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed *p)
 {
     zl_cached_vertex c;
     int32_t x, y, z, w, wx, wy;
@@ -289,6 +353,62 @@ static zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed *p)
     return c;
 }
 
+/* Row r of the transform when no range check is needed (vs->pfast). */
+static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_fixed *p)
+{
+    const zl_fixed *m = &vs->m[r * 4];
+    int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    return (int32_t)zl_floor_shift64(acc, 16); /* |acc| < 2^47 */
+}
+
+/*
+ * vx_cache for the common vertex, same numbers, or 0 when it cannot tell
+ * (then vx_cache decides). Positions within [-P, P): no range checks. With
+ * n = |c| h and q = floor((n + off) / w), 0 <= off < w, as vx_window: q is
+ * at least floor(n / w), so q < h + G 2^SUB gives n < (h + G 2^SUB) w,
+ * which is the pair of x planes multiplied by 2^SUB / 2 (W |x| <= (W + 2G) w).
+ * The window coordinate h -+ q is then in range when q < qx (qy).
+ */
+static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c)
+{
+    uint32_t pf = vs->pfast, ax, ay, q;
+    uint64_t n;
+    int32_t x, y, z, w, wx;
+    if ((((uint32_t)p[0] + pf) | ((uint32_t)p[1] + pf) | ((uint32_t)p[2] + pf)) >= 2u * pf)
+        return 0;
+    /* Each row where it is needed: the compiler keeps the order. */
+    w = vx_row_fast(vs, 3, p);
+    z = vx_row_fast(vs, 2, p);
+    if (w < 1 || (uint32_t)z > (uint32_t)w) {
+        c->x = ZL_CACHE_COMPLEX; /* outside the w, near or far plane */
+        c->y = 0;
+        c->z = 0;
+        return 1;
+    }
+    x = vx_row_fast(vs, 0, p);
+    ax = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+    /* vx_window's offset: w/2, or w - 1 - w/2 = (w - 1)/2 for the negative side */
+    n = (uint64_t)ax * vs->hx + (((uint32_t)w - (x < 0)) >> 1);
+    if ((n >> 32) != 0)
+        return 0;
+    q = (uint32_t)n / (uint32_t)w;
+    if (q >= vs->qx)
+        return 0;
+    wx = x < 0 ? (int32_t)vs->hx - (int32_t)q : (int32_t)(vs->hx + q);
+    y = vx_row_fast(vs, 1, p);
+    ay = y < 0 ? 0u - (uint32_t)y : (uint32_t)y;
+    n = (uint64_t)ay * vs->hy + (((uint32_t)w - (y > 0)) >> 1); /* row 0 at the top: (w - y) h / w */
+    if ((n >> 32) != 0)
+        return 0;
+    q = (uint32_t)n / (uint32_t)w;
+    if (q >= vs->qy)
+        return 0;
+    c->x = (int16_t)wx;
+    c->y = (int16_t)(y > 0 ? (int32_t)vs->hy - (int32_t)q : (int32_t)(vs->hy + q));
+    c->z = depth_q16((uint32_t)z, (uint32_t)w);
+    return 1;
+}
+
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
 {
     vx_setup vs;
@@ -298,7 +418,13 @@ zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
         zl_cached_vertex c = {ZL_CACHE_INVALID, 0, 0};
         return c;
     }
-    return vx_cache(&vs, &s->mesh->positions[idx * 3u]);
+    {
+        const zl_fixed *p = &s->mesh->positions[idx * 3u];
+        zl_cached_vertex c;
+        if (!vx_fast(&vs, p, &c))
+            c = vx_cache(&vs, p);
+        return c;
+    }
 }
 
 zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_t first, uint16_t count)
@@ -321,6 +447,8 @@ zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_
         return ZL_ERR_RANGE;
     }
     for (; c != end; c++, p += 3) {
+        if (vx_fast(&vs, p, c))
+            continue;
         *c = vx_cache(&vs, p);
         if (c->x == ZL_CACHE_INVALID)
             st = ZL_ERR_RANGE;
@@ -446,11 +574,6 @@ static unsigned bit_length32(uint32_t v)
     }
     return n;
 #endif
-}
-
-static uint32_t abs32(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
 /*
