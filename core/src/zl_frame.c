@@ -885,6 +885,13 @@ static ZL_ALWAYS_INLINE void edge_step(zl_edge *e)
     }
 }
 
+/* The depth plane at column x0 when its gradient needs more than 32 bits
+ * (rare: out of line, so the common case stays one multiply-accumulate). */
+static ZL_NOINLINE int64_t plane_wide(const zl_active *a, int32_t x0)
+{
+    return a->z.row + (int64_t)(x0 - a->ax) * a->z.dx;
+}
+
 /* Spans up to this many pixels are written in place by span_565; longer ones
  * go to zl_span_flat (zl_raster.c's ZL_SHORT_SPAN). */
 #define SHORT_SPAN 6
@@ -904,13 +911,14 @@ static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *s
     int32_t n = x1 - x0, k;
     int64_t v, w;
     uint32_t z, dz = a->dz14, lo14 = a->zlo >> 2, hi14 = a->zhi >> 2;
+    int32_t dx32 = (int32_t)a->z.dx; /* kept only when it is the whole gradient */
     uint16_t pixel = (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
                                 (unsigned)(a->rgb[2] >> 3));
     uint16_t *c, *zb;
-    if (a->z.dx >= INT32_MIN && a->z.dx <= INT32_MAX)
-        v = a->z.row + (int64_t)(int32_t)a->z.dx * (x0 - a->ax);
+    if (a->z.dx == (int64_t)dx32) /* a 32-bit gradient: one multiply-accumulate */
+        v = a->z.row + (int64_t)dx32 * (x0 - a->ax);
     else
-        v = a->z.row + (int64_t)(x0 - a->ax) * a->z.dx;
+        v = plane_wide(a, x0);
     w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
     z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
     z = (z < lo14 ? lo14 : z) + (1u << 13);
