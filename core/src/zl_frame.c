@@ -686,6 +686,81 @@ static zl_texplanes *tex_of(const zl_frame *f, uint16_t slot)
     return f->tex ? (zl_texplanes *)(void *)(f->tex + (size_t)slot * sizeof(zl_texplanes)) : NULL;
 }
 
+/* The general setup of a cached triangle zl_tri_setup_flat could not take
+ * (its numbers beyond 32 bits), as frame mode's setup_general: 0 when it
+ * has no rows in the target (planning found some, so never). */
+static ZL_NOINLINE int setup_general(const zl_frame_mesh *m, const zl_source *s, const zl_cached_vertex *const *c,
+                                     zl_poly *poly, zl_active *a)
+{
+    int32_t first, end;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        poly->v[k].x = c[k]->x;
+        poly->v[k].y = c[k]->y;
+        poly->v[k].z = c[k]->z;
+        poly->v[k].r = 0; /* vertex colours only matter to Gouraud shading */
+        poly->v[k].g = 0;
+        poly->v[k].b = 0;
+    }
+    poly->n = 3;
+    if (!zl_tri_classify(&poly->v[0], &poly->v[1], &poly->v[2], &m->state, s->width, s->height, &first, &end))
+        return 0;
+    zl_tri_setup_rows(a, NULL, NULL, NULL, &poly->v[0], &poly->v[1], &poly->v[2], poly, &m->state, first, end);
+    return 1;
+}
+
+/* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
+ * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
+ * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
+ * frame mode's draw_cached does (poly: the caller's scratch polygon).
+ * Returns 0 when it has no rows (never). */
+static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t,
+                                         const zl_cached_vertex *const *c, zl_active *a, zl_poly *poly)
+{
+    int set = zl_tri_setup_flat(a, c[0], c[1], c[2], s->width, s->height);
+    if (set == 0)
+        return 0;
+    poly->n = 0; /* flat: no vertex colours for the lighting to scale */
+    if (set < 0 && !setup_general(m, s, c, poly, a))
+        return 0;
+    zl_tri_shade(s, t, poly);
+    a->rgb[0] = poly->flat.r;
+    a->rgb[1] = poly->flat.g;
+    a->rgb[2] = poly->flat.b;
+    a->light = poly->light;
+    return 1;
+}
+
+/* Triangle t of mesh record mi, a MESH_FLAT mesh, when its three vertices
+ * are cached inside: set up by setup_cached and inserted at *link. Returns
+ * 0, having done nothing, when a vertex needs clipping (or is dropped):
+ * then the general path takes the triangle. */
+static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_source *s, uint32_t t, uint16_t *link,
+                                            zl_poly *poly)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    const uint16_t *idx = &m->mesh.indices[t * 3u];
+    const zl_cached_vertex *c[3];
+    uint16_t slot = f->free_head;
+    zl_active *a;
+    c[0] = &s->cache[idx[0]];
+    c[1] = &s->cache[idx[1]];
+    c[2] = &s->cache[idx[2]];
+    if (c[0]->x <= ZL_CACHE_INVALID || c[1]->x <= ZL_CACHE_INVALID || c[2]->x <= ZL_CACHE_INVALID)
+        return 0;
+    if (slot == ZL_LIST_END)
+        return 1; /* cannot happen: planning bounded the peak */
+    a = &f->pool[slot];
+    if (!setup_cached(m, s, t, c, a, poly))
+        return 1;
+    f->free_head = a->next;
+    a->id = (uint16_t)(m->tri_base + t);
+    a->mesh = mi;
+    a->next = *link;
+    *link = slot;
+    return 1;
+}
+
 /* Set up the pieces of triangle `id` and insert them, in order, at *link
  * (where the render walk of the active list has reached the first record
  * with a greater id). */
@@ -701,6 +776,8 @@ static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
     zl_poly *poly = &tpoly.p;
     unsigned k, n = 1;
     source_of(f, m, &s);
+    if (!lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly))
+        return;
     if (!lines) {
         if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
                                          : zl_tri_polygon_geom(&s, sty, t, poly)))
@@ -776,51 +853,6 @@ static ZL_NOINLINE void render_row_styled(zl_frame *f, uint16_t y, uint16_t i, u
     }
 }
 
-/* The general setup of a cached triangle zl_tri_setup_flat could not take
- * (its numbers beyond 32 bits), as frame mode's setup_general: 0 when it
- * has no rows in the target (planning found some, so never). */
-static ZL_NOINLINE int setup_general(const zl_frame_mesh *m, const zl_source *s, const zl_cached_vertex *const *c,
-                                     zl_poly *poly, zl_active *a)
-{
-    int32_t first, end;
-    unsigned k;
-    for (k = 0; k < 3; k++) {
-        poly->v[k].x = c[k]->x;
-        poly->v[k].y = c[k]->y;
-        poly->v[k].z = c[k]->z;
-        poly->v[k].r = 0; /* vertex colours only matter to Gouraud shading */
-        poly->v[k].g = 0;
-        poly->v[k].b = 0;
-    }
-    poly->n = 3;
-    if (!zl_tri_classify(&poly->v[0], &poly->v[1], &poly->v[2], &m->state, s->width, s->height, &first, &end))
-        return 0;
-    zl_tri_setup_rows(a, NULL, NULL, NULL, &poly->v[0], &poly->v[1], &poly->v[2], poly, &m->state, first, end);
-    return 1;
-}
-
-/* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
- * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
- * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
- * frame mode's draw_cached does. Returns 0 when it has no rows (never). */
-static int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t, const zl_cached_vertex *const *c,
-                        zl_active *a)
-{
-    zl_poly poly;
-    int set = zl_tri_setup_flat(a, c[0], c[1], c[2], s->width, s->height);
-    if (set == 0)
-        return 0;
-    poly.n = 0; /* flat: no vertex colours for the lighting to scale */
-    if (set < 0 && !setup_general(m, s, c, &poly, a))
-        return 0;
-    zl_tri_shade(s, t, &poly);
-    a->rgb[0] = poly.flat.r;
-    a->rgb[1] = poly.flat.g;
-    a->rgb[2] = poly.flat.b;
-    a->light = poly.light;
-    return 1;
-}
-
 /* activate() without style records: a filled triangle, no texture planes. */
 static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
 {
@@ -831,28 +863,8 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
     zl_poly poly;
     unsigned k, n;
     source_of(f, m, &s);
-    if (m->flags & MESH_FLAT) {
-        const uint16_t *idx = &m->mesh.indices[t * 3u];
-        const zl_cached_vertex *c[3];
-        c[0] = &s.cache[idx[0]];
-        c[1] = &s.cache[idx[1]];
-        c[2] = &s.cache[idx[2]];
-        if (c[0]->x > ZL_CACHE_INVALID && c[1]->x > ZL_CACHE_INVALID && c[2]->x > ZL_CACHE_INVALID) {
-            uint16_t slot = f->free_head;
-            zl_active *a;
-            if (slot == ZL_LIST_END)
-                return; /* cannot happen: planning bounded the peak */
-            a = &f->pool[slot];
-            if (!setup_cached(m, &s, t, c, a))
-                return;
-            f->free_head = a->next;
-            a->id = id;
-            a->mesh = mi;
-            a->next = *link;
-            *link = slot;
-            return;
-        }
-    }
+    if ((m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, &poly))
+        return;
     if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
         return;
     zl_tri_shade(&s, t, &poly);
