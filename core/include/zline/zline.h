@@ -625,7 +625,11 @@ size_t zl_frame_bytes(const zl_frame_config *cfg);
  * (declare it as uint64_t work[(bytes + 7) / 8]); ZL_ERR_ARG if misaligned. */
 zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
                          zl_rgb clear_color, uint16_t clear_depth);
-/* Submit a mesh with its transform (NULL: pixel space) and state (copied). */
+/* Submit a mesh with its transform (NULL: pixel space) and state (copied).
+ * With a matrix the vertex positions are transformed here, into the work
+ * buffer's vertex cache; the other arrays of the mesh (indices, colours) are
+ * read while the bands are rendered, so they must stay valid and unchanged
+ * until the frame is done. */
 zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp,
                             const zl_state *state);
 /* The same with a style (polygon modes, offset, points); NULL means the
