@@ -627,9 +627,9 @@ zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, si
                          zl_rgb clear_color, uint16_t clear_depth);
 /* Submit a mesh with its transform (NULL: pixel space) and state (copied).
  * With a matrix the vertex positions are transformed here, into the work
- * buffer's vertex cache; the other arrays of the mesh (indices, colours) are
- * read while the bands are rendered, so they must stay valid and unchanged
- * until the frame is done. */
+ * buffer's vertex cache; the mesh's arrays (indices, colours, and positions
+ * for lighting) are still read while the bands are rendered, so they must
+ * stay valid and unchanged until the frame is done. */
 zl_status zl_frame_add_mesh(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp,
                             const zl_state *state);
 /* The same with a style (polygon modes, offset, points); NULL means the
