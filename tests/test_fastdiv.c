@@ -5,6 +5,8 @@
  * cache (zl_cache_vertex, zl_cache_vertices) and zl_project, whose fast
  * paths use it, against the straightforward 64-bit formulas written out here.
  */
+#include <string.h>
+
 #include "../core/src/zl_internal.h"
 #include "unity.h"
 
@@ -634,6 +636,74 @@ static void test_lighting_matches_64bit_definition(void)
     TEST_ASSERT_TRUE(lit > 20000u && dark > 20000u);
 }
 
+/* Lighting at the edges of its fast paths: first vertex at and around
+ * +-2^30 (and beyond), edges at and around +-2^14, light components where
+ * the Q14 clamp starts, polygons of 3 to ZL_MAX_POLY vertices with colour
+ * on any one of them. */
+static void test_lighting_edges(void)
+{
+    static const int32_t p0s[] = {0, 1, -1, 0x3FFFFFFF, 0x40000000, 0x40000001, -0x3FFFFFFF, -0x40000000,
+                                  -0x40000001, INT32_MAX, INT32_MIN, INT32_MAX - 0x4000, INT32_MIN + 0x4000};
+    static const int32_t es[] = {-0x4001, -0x4000, -0x3FFF, -1, 0, 1, 0x3FFF, 0x4000, 0x4001, -0x2000, 0x2345};
+    static const int32_t ls[] = {0, 1, -1, 3, -3, 4, -4, 5, -5, 65535, 65536, 65539, 65540, 65543, -65535, -65536,
+                                 -65539, -65540, -65543, 24576, -32768, 49152, INT32_MAX, INT32_MIN};
+    unsigned k, i;
+    for (k = 0; k < 40000u; k++) {
+        zl_fixed pos[9];
+        uint16_t idx[3] = {0, 1, 2};
+        zl_mesh mesh = {0};
+        zl_state st;
+        zl_source s = {0};
+        zl_poly poly, before;
+        unsigned want, c;
+        zl_state_default(&st);
+        st.light_on = 1;
+        st.ambient = (uint8_t)(rnd32() & 1u ? rnd32() : 0u);
+        st.front_face = (uint8_t)(rnd32() & 1u ? ZL_FRONT_CW : ZL_FRONT_CCW);
+        st.color.r = (uint8_t)rnd32();
+        st.color.g = (uint8_t)rnd32();
+        st.color.b = (uint8_t)rnd32();
+        st.light_dir.x = ls[rnd32() % (sizeof ls / sizeof ls[0])];
+        st.light_dir.y = ls[rnd32() % (sizeof ls / sizeof ls[0])];
+        st.light_dir.z = ls[rnd32() % (sizeof ls / sizeof ls[0])];
+        for (i = 0; i < 3; i++) {
+            pos[i] = (rnd32() & 3u) ? p0s[rnd32() % (sizeof p0s / sizeof p0s[0])] : (zl_fixed)(rnd32() >> 2);
+            pos[3 + i] = (zl_fixed)((uint32_t)pos[i] + (uint32_t)es[rnd32() % (sizeof es / sizeof es[0])]);
+            pos[6 + i] = (zl_fixed)((uint32_t)pos[i] + (uint32_t)es[rnd32() % (sizeof es / sizeof es[0])]);
+        }
+        mesh.positions = pos;
+        mesh.vertex_count = 3;
+        mesh.triangle_count = 1;
+        mesh.indices = idx;
+        s.mesh = &mesh;
+        s.state = &st;
+        memset(&poly, 0, sizeof poly);
+        poly.n = 3u + rnd32() % (ZL_MAX_POLY - 2u);
+        if (rnd32() & 1u) {
+            i = rnd32() % poly.n; /* one vertex with colour, the others black */
+            poly.v[i].r = (uint16_t)(rnd32() % (255u * 256u + 1u));
+            poly.v[i].g = (uint16_t)(rnd32() & 1u ? rnd32() % (255u * 256u + 1u) : 0u);
+            poly.v[i].b = (uint16_t)(rnd32() & 1u ? rnd32() % (255u * 256u + 1u) : 0u);
+        }
+        before = poly;
+        want = ref_intensity(pos, &pos[3], &pos[6], &st);
+        zl_tri_shade(&s, 0, &poly);
+        TEST_ASSERT_EQUAL_UINT(want, poly.light);
+        TEST_ASSERT_EQUAL_UINT((st.color.r * want + 127u) / 255u, poly.flat.r);
+        TEST_ASSERT_EQUAL_UINT((st.color.g * want + 127u) / 255u, poly.flat.g);
+        TEST_ASSERT_EQUAL_UINT((st.color.b * want + 127u) / 255u, poly.flat.b);
+        TEST_ASSERT_EQUAL_UINT(before.n, poly.n);
+        for (i = 0; i < poly.n; i++) {
+            c = before.v[i].r;
+            TEST_ASSERT_EQUAL_UINT((c * want + 127u) / 255u, poly.v[i].r);
+            c = before.v[i].g;
+            TEST_ASSERT_EQUAL_UINT((c * want + 127u) / 255u, poly.v[i].g);
+            c = before.v[i].b;
+            TEST_ASSERT_EQUAL_UINT((c * want + 127u) / 255u, poly.v[i].b);
+        }
+    }
+}
+
 /* zl_isqrt32 around every square and power of two (the table's seams). */
 static void test_isqrt32_squares(void)
 {
@@ -670,6 +740,7 @@ int main(void)
     RUN_TEST(test_depth_edges);
     RUN_TEST(test_project_matches_64bit_formulas);
     RUN_TEST(test_lighting_matches_64bit_definition);
+    RUN_TEST(test_lighting_edges);
     RUN_TEST(test_isqrt32_squares);
     return UNITY_END();
 }

@@ -2,6 +2,9 @@
  * Vertex transform, clipping (Sutherland-Hodgman, one plane at a time, in
  * homogeneous clip space) and projection to snapped window coordinates.
  */
+#include <stddef.h>
+#include <string.h>
+
 #include "zl_internal.h"
 
 enum {
@@ -555,10 +558,14 @@ static unsigned shift_below(int64_t big, unsigned bits)
     return len - bits;
 }
 
-static int32_t light_q14(zl_fixed c)
+/* trunc(c / 4) clamped to [-2^14, 2^14]: the light direction in Q14. */
+static ZL_ALWAYS_INLINE int32_t light_q14(zl_fixed c)
 {
-    int32_t v = c / 4;
-    return v > (1 << 14) ? (1 << 14) : (v < -(1 << 14) ? -(1 << 14) : v);
+    /* c / 4 as floor((c + 3) / 4) for negative c: the 3 is the sign's top two bits */
+    int32_t v = zl_floor_shift32(c + (int32_t)((uint32_t)zl_floor_shift32(c, 31) >> 30), 2);
+    if ((uint32_t)v + (1u << 14) > (1u << 15))
+        v = v < 0 ? -(1 << 14) : (1 << 14);
+    return v;
 }
 
 /* Bit length of v (0 for 0). */
@@ -576,37 +583,21 @@ static unsigned bit_length32(uint32_t v)
 #endif
 }
 
-/*
- * Face normal of small triangles (most of a mesh), all in 32 bits: every
- * edge below 2^14, so the cross product stays below 2^29. The differences
- * are taken modulo 2^32; with the first vertex within +-2^30, a wrapped
- * difference below 2^14 is the true one (a true one of 2^32 - 2^14 or more
- * would need |p0| > 2^31 - 2^14). 0 when the triangle is not small.
- */
-static int small_normal(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *p2, int32_t *n)
+/* |v| <= 2^30 for all three: one compare for the common case (every
+ * v + 2^30 below 2^31), the exact test otherwise (v = 2^30). */
+static ZL_ALWAYS_INLINE int in_limit3(const zl_fixed *p)
 {
-    int32_t e[6];
-    uint32_t mag = 0;
-    unsigned k;
-    if (!in_limit(p0[0]) || !in_limit(p0[1]) || !in_limit(p0[2]))
-        return 0;
-    for (k = 0; k < 3; k++) {
-        e[k] = (int32_t)((uint32_t)p1[k] - (uint32_t)p0[k]);
-        e[k + 3] = (int32_t)((uint32_t)p2[k] - (uint32_t)p0[k]);
-        mag |= abs32(e[k]) | abs32(e[k + 3]); /* below 2^14 iff every one is */
-    }
-    if (mag >= (1u << 14))
-        return 0;
-    n[0] = e[1] * e[5] - e[2] * e[4];
-    n[1] = e[2] * e[3] - e[0] * e[5];
-    n[2] = e[0] * e[4] - e[1] * e[3];
-    return 1;
+    if ((((uint32_t)p[0] + COORD_LIMIT) | ((uint32_t)p[1] + COORD_LIMIT) | ((uint32_t)p[2] + COORD_LIMIT)) <
+        2u * COORD_LIMIT)
+        return 1;
+    return in_limit(p[0]) && in_limit(p[1]) && in_limit(p[2]);
 }
 
 /* The normal of any triangle, scaled below 2^14: edges brought below 2^30
  * so the 64-bit cross product cannot overflow, then the normal shifted. */
-static ZL_NOINLINE void large_normal(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *p2, int32_t *m)
+static ZL_NOINLINE void large_normal(const zl_fixed *pos, const uint16_t *idx, int32_t *m)
 {
+    const zl_fixed *p0 = &pos[idx[0] * 3u], *p1 = &pos[idx[1] * 3u], *p2 = &pos[idx[2] * 3u];
     int64_t e[6], n[3];
     unsigned k, shift;
     for (k = 0; k < 3; k++) {
@@ -629,39 +620,56 @@ static ZL_NOINLINE void large_normal(const zl_fixed *p0, const zl_fixed *p1, con
  * Only 8 bits come out, so the normal is scaled to 14 bits and the rest is
  * 32-bit arithmetic (one 32-bit square root and division): this runs once
  * per drawn triangle, so it must be cheap on a Cortex-M. The numbers are
- * those of the 64-bit definition (large_normal) for every triangle: a
- * small one's normal is the same product in 32 bits, and the shift to 14
- * bits is the bit length of the largest component, which is the bit length
- * of the OR of all three.
+ * those of the 64-bit definition (large_normal) for every triangle.
+ *
+ * Small triangles (most of a mesh) take a 32-bit path: with every edge in
+ * [-2^14, 2^14) the cross product stays within 2^29. The edges are taken
+ * modulo 2^32; with the first vertex within +-2^30, a wrapped difference in
+ * that range is the true one (a true one 2^32 away would need |p0| >= 2^31 -
+ * 2^14). The shift to 14 bits is the bit length of the largest component,
+ * which is the bit length of the OR of all three.
  */
-static unsigned face_intensity(const zl_source *s, const uint16_t *idx)
+static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *idx)
 {
     const zl_fixed *pos = s->mesh->positions;
     const zl_fixed *p0 = &pos[idx[0] * 3u], *p1 = &pos[idx[1] * 3u], *p2 = &pos[idx[2] * 3u];
     const zl_state *st = s->state;
-    int32_t m[3], dot, cosv;
+    const uint32_t x0 = (uint32_t)p0[0], y0 = (uint32_t)p0[1], z0 = (uint32_t)p0[2], half = 1u << 14;
+    const uint32_t e0 = (uint32_t)p1[0] - x0, e1 = (uint32_t)p1[1] - y0, e2 = (uint32_t)p1[2] - z0;
+    const uint32_t e3 = (uint32_t)p2[0] - x0, e4 = (uint32_t)p2[1] - y0, e5 = (uint32_t)p2[2] - z0;
+    int32_t m0, m1, m2, dot, cosv;
     uint32_t len;
-    if (small_normal(p0, p1, p2, m)) {
-        unsigned len_n = bit_length32(abs32(m[0]) | abs32(m[1]) | abs32(m[2]));
-        if (len_n > 14) {
-            m[0] = zl_floor_shift32(m[0], len_n - 14);
-            m[1] = zl_floor_shift32(m[1], len_n - 14);
-            m[2] = zl_floor_shift32(m[2], len_n - 14);
+    /* every edge in [-2^14, 2^14) iff each e + 2^14 is below 2^15 */
+    if (((e0 + half) | (e1 + half) | (e2 + half) | (e3 + half) | (e4 + half) | (e5 + half)) < 2u * half &&
+        in_limit3(p0)) {
+        const int32_t a0 = (int32_t)e0, a1 = (int32_t)e1, a2 = (int32_t)e2;
+        const int32_t b0 = (int32_t)e3, b1 = (int32_t)e4, b2 = (int32_t)e5;
+        uint32_t mag;
+        m0 = a1 * b2 - a2 * b1;
+        m1 = a2 * b0 - a0 * b2;
+        m2 = a0 * b1 - a1 * b0;
+        mag = abs32(m0) | abs32(m1) | abs32(m2);
+        if (mag >= (1u << 14)) {
+            unsigned sh = bit_length32(mag) - 14u;
+            m0 = zl_floor_shift32(m0, sh);
+            m1 = zl_floor_shift32(m1, sh);
+            m2 = zl_floor_shift32(m2, sh);
         }
     } else {
-        large_normal(p0, p1, p2, m);
+        int32_t m[3];
+        large_normal(pos, idx, m);
+        m0 = m[0];
+        m1 = m[1];
+        m2 = m[2];
     }
-    len = zl_isqrt32((uint32_t)(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]));
-    if (len == 0)
-        return st->ambient;
     /* light_dir is a unit vector in Q16; in Q14, clamped to [-1, 1], the three
      * products and their sum stay inside 32 bits whatever the caller passed. */
-    dot = m[0] * light_q14(st->light_dir.x) + m[1] * light_q14(st->light_dir.y) +
-          m[2] * light_q14(st->light_dir.z);
+    dot = m0 * light_q14(st->light_dir.x) + m1 * light_q14(st->light_dir.y) + m2 * light_q14(st->light_dir.z);
     if (st->front_face == ZL_FRONT_CW)
         dot = -dot;
     if (dot <= 0)
-        return st->ambient;
+        return st->ambient; /* before the square root: a zero normal has dot 0 */
+    len = zl_isqrt32((uint32_t)(m0 * m0 + m1 * m1 + m2 * m2)); /* >= 1: the normal is not 0 */
     cosv = dot / (int32_t)len; /* Q14 */
     if (cosv > (1 << 14))
         cosv = 1 << 14;
@@ -678,24 +686,53 @@ static uint16_t scale255_q8(unsigned c, unsigned i)
     return (uint16_t)((c * i + 127) / 255);
 }
 
-/* Flat colour and lighting of source triangle t into poly. */
-static void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *poly)
+/* Non-zero iff the vertex colour is not black; r and g in one 32-bit load
+ * where they are adjacent (always, in practice). */
+static ZL_ALWAYS_INLINE uint32_t rgb_bits(const zl_wvert *v)
 {
-    const zl_state *st = s->state;
+    if (offsetof(zl_wvert, g) == offsetof(zl_wvert, r) + sizeof(uint16_t)) {
+        uint32_t rg;
+        memcpy(&rg, (const unsigned char *)v + offsetof(zl_wvert, r), sizeof rg);
+        return rg | v->b;
+    }
+    return (uint32_t)v->r | v->g | v->b;
+}
+
+static ZL_ALWAYS_INLINE zl_rgb face_color(const zl_source *s, uint32_t t)
+{
     const uint8_t *fc = s->mesh->face_colors;
-    unsigned i, k;
-    poly->flat = fc ? (zl_rgb){fc[t * 3], fc[t * 3 + 1], fc[t * 3 + 2]} : st->color;
-    poly->light = 255;
-    if (!st->light_on)
+    return fc ? (zl_rgb){fc[t * 3], fc[t * 3 + 1], fc[t * 3 + 2]} : s->state->color;
+}
+
+/* Flat colour and lighting of source triangle t into poly. */
+static ZL_ALWAYS_INLINE void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *poly)
+{
+    unsigned i, k, n;
+    uint32_t any = 0;
+    zl_rgb c;
+    if (!s->state->light_on) {
+        poly->flat = face_color(s, t);
+        poly->light = 255;
         return;
-    i = face_intensity(s, idx);
+    }
+    i = face_intensity(s, idx); /* first: fewer values live across it */
+    c = face_color(s, t);
+    n = poly->n;
     poly->light = (uint8_t)i;
-    poly->flat.r = scale255(poly->flat.r, i);
-    poly->flat.g = scale255(poly->flat.g, i);
-    poly->flat.b = scale255(poly->flat.b, i);
-    for (k = 0; k < poly->n; k++) {
-        if ((poly->v[k].r | poly->v[k].g | poly->v[k].b) == 0)
-            continue; /* black stays black: no vertex colours, the common case */
+    poly->flat.r = scale255(c.r, i);
+    poly->flat.g = scale255(c.g, i);
+    poly->flat.b = scale255(c.b, i);
+    /* black stays black (scale255_q8(0, i) is 0): no vertex colours, the common case */
+    k = 0;
+    if (n >= 3) {
+        any = rgb_bits(&poly->v[0]) | rgb_bits(&poly->v[1]) | rgb_bits(&poly->v[2]);
+        k = 3;
+    }
+    for (; k < n; k++)
+        any |= rgb_bits(&poly->v[k]);
+    if (any == 0)
+        return;
+    for (k = 0; k < n; k++) {
         poly->v[k].r = scale255_q8(poly->v[k].r, i);
         poly->v[k].g = scale255_q8(poly->v[k].g, i);
         poly->v[k].b = scale255_q8(poly->v[k].b, i);
