@@ -90,16 +90,20 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
 zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
 {
     uint32_t i, n;
+    int32_t bad = 0;
     (void)pixel_space;
     if (m == NULL)
         return ZL_ERR_ARG;
     if ((m->vertex_count > 0 && m->positions == NULL) || (m->triangle_count > 0 && m->indices == NULL))
         return ZL_ERR_ARG;
+    /* vertex_count - 1 - index is negative exactly for an index out of
+     * range: OR-ing them tests a whole mesh with one branch at the end. */
     n = (uint32_t)m->triangle_count * 3u;
-    for (i = 0; i < n; i++)
-        if (m->indices[i] >= m->vertex_count)
-            return ZL_ERR_RANGE;
-    return ZL_OK;
+    for (i = 0; i < n; i += 3) {
+        const int32_t top = (int32_t)m->vertex_count - 1;
+        bad |= (top - m->indices[i]) | (top - m->indices[i + 1]) | (top - m->indices[i + 2]);
+    }
+    return bad < 0 ? ZL_ERR_RANGE : ZL_OK;
 }
 
 /* Draw one set-up triangle, line or point into the target, all its rows. */

@@ -173,7 +173,7 @@ typedef struct {
     int32_t rows;               /* first row minus the anchor row */
     int neg;                    /* the cross product is negative */
     uint32_t c32;               /* |cross| */
-    zl_div_inv inv;
+    zl_div_inv inv;             /* its reciprocal, set only when c32 >= 2^16 */
 } small_frame;
 
 /* round(x / c) as muldiv_pow2 rounds, by the frame's reciprocal; 0 when
@@ -191,6 +191,35 @@ static ZL_ALWAYS_INLINE int round_div_inv(int64_t x, const small_frame *f, int64
 }
 
 /*
+ * The same rounding for a divisor below 2^16 (the cross product of a
+ * triangle of fewer than 128 square pixels, most of a real mesh):
+ * schoolbook division in two 16-bit digits, two 32-bit divisions and no
+ * reciprocal. 0 under the same condition as round_div_inv (a quotient of
+ * 2^32 or more, which muldiv_pow2 might saturate), so the numerator is
+ * below c 2^32 < 2^48.
+ */
+static ZL_ALWAYS_INLINE int round_div_small(int64_t x, uint32_t c, int64_t *q)
+{
+    uint64_t m = x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+    uint64_t num = x < 0 ? m + (c - 1u - c / 2u) : m + c / 2u;
+    uint32_t hi, q1, q0;
+    if ((num >> 32) >= c)
+        return 0;
+    hi = (uint32_t)(num >> 16);
+    q1 = hi / c;
+    q0 = (((hi - q1 * c) << 16) | (uint32_t)(num & 0xFFFFu)) / c; /* the remainder is below 2^16 */
+    m = ((uint64_t)q1 << 16) + q0;
+    *q = x < 0 ? -(int64_t)m : (int64_t)m;
+    return 1;
+}
+
+/* round(x / |cross|) by the cheaper of the two ways. */
+static ZL_ALWAYS_INLINE int round_div_frame(int64_t x, const small_frame *f, int64_t *q)
+{
+    return f->c32 < 65536u ? round_div_small(x, f->c32, q) : round_div_inv(x, f, q);
+}
+
+/*
  * plane_setup's values in the common case: small vertices and value
  * differences d1 = a1 - a0, d2 = a2 - a0 within 32 bits, so ga and gb are
  * sums of two 32x32-bit products, every shifted numerator stays below 2^60,
@@ -205,9 +234,9 @@ static ZL_NOINLINE int plane_small(zl_attr *at, const small_frame *f, int64_t a0
         ga = -ga;
         gb = -gb;
     }
-    if (!round_div_inv(ga * (1 << (ZL_SUB_BITS + ZL_ATTR_FRAC - 16)), f, &dx) ||
-        !round_div_inv(gb * (1 << (ZL_SUB_BITS + ZL_ATTR_FRAC - 16)), f, &dy) ||
-        !round_div_inv((ga * f->ox + gb * f->oy) * (1 << (ZL_ATTR_FRAC - 16)), f, &off))
+    if (!round_div_frame(ga * (1 << (ZL_SUB_BITS + ZL_ATTR_FRAC - 16)), f, &dx) ||
+        !round_div_frame(gb * (1 << (ZL_SUB_BITS + ZL_ATTR_FRAC - 16)), f, &dy) ||
+        !round_div_frame((ga * f->ox + gb * f->oy) * (1 << (ZL_ATTR_FRAC - 16)), f, &off))
         return 0;
     at->dx = dx;
     at->dy = dy;
@@ -581,7 +610,8 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
     f.ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
     f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
     f.rows = first - ay;
-    zl_div_inv_init(&f.inv, f.c32);
+    if (f.c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
+        zl_div_inv_init(&f.inv, f.c32);
     if (!plane_small(&t->z, &f, v0->z, d1, d2))
         return -1;
     mid = first_centre_at_or_after(v1->y);
@@ -712,7 +742,8 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
     f.ox = tt->ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
     f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
     f.rows = first - ay;
-    zl_div_inv_init(&f.inv, f.c32);
+    if (f.c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
+        zl_div_inv_init(&f.inv, f.c32);
     if (!plane_small(&z, &f, v0->z, d1, d2) || z.dx < INT32_MIN || z.dx > INT32_MAX)
         return -1;
     tt->zrow = z.row;
