@@ -273,9 +273,12 @@ typedef struct {
 } zl_tiny_edge;
 typedef struct {
     zl_tiny_edge lng, up, low; /* v0-v2, v0-v1 (rows first..mid), v1-v2 (rows mid..end) */
-    int64_t zrow, zdy;         /* depth plane, Q20: value at (ax, first), change per row */
-    int32_t zdx;               /* change per pixel (it fits 32 bits here) */
-    uint32_t dz14, lo14, hi14; /* span stepper and clamp range, Q14 */
+    /* depth plane, Q20, relative to a multiple of 64 at the lowest vertex
+     * depth: value at (ax, first), change per row and per pixel (modulo
+     * 2^32), the vertex range, and what the shifted value adds back */
+    uint32_t zr, zdy, zdx;
+    int32_t zlo, zhi;
+    uint32_t zbase, dz14;      /* zbase includes the rounding half; dz14: span stepper, Q14 */
     int32_t ax, first, mid, end;
     int long_left;             /* the long edge bounds the spans on the left */
 } zl_tiny;

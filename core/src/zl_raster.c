@@ -686,11 +686,39 @@ static ZL_ALWAYS_INLINE int32_t tiny_x(int32_t n, int32_t d)
     return q * d < n ? q + 1 : q;
 }
 
+/*
+ * The depth plane of a small triangle in 32 bits. A row's span starts at a
+ * pixel centre inside the triangle, where the exact plane lies within the
+ * vertex range [zlo, zhi] and the rounded one within 2^10 of it (half a
+ * unit of gradient per pixel and row from the anchor, at most 2^13 of
+ * them). Relative to off, the largest multiple of 64 (Q20) not above the
+ * lowest vertex depth, that value fits 32 bits when zhi - zlo < 2^25, and
+ * floor(v / 64) = floor((v - off) / 64) + off / 64 keeps the shift exact.
+ * The row and gradient values themselves may be anything (far outside the
+ * triangle for a sliver): they are kept modulo 2^32, which leaves a sum
+ * that fits exact. 0 when the depth range is too wide.
+ */
+static int tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t z0, uint32_t z1, uint32_t z2)
+{
+    uint32_t zlo = z0 < z1 ? (z0 < z2 ? z0 : z2) : (z1 < z2 ? z1 : z2);
+    uint32_t zhi = z0 > z1 ? (z0 > z2 ? z0 : z2) : (z1 > z2 ? z1 : z2);
+    uint32_t off = (zlo >> 2) << (ZL_ATTR_FRAC - 14); /* the low word of off, which is all that matters */
+    if (zhi - zlo >= (1u << 25))
+        return 0;
+    tt->zr = (uint32_t)(uint64_t)z->row - off;
+    tt->zdy = (uint32_t)(uint64_t)z->dy;
+    tt->zdx = (uint32_t)(uint64_t)z->dx;
+    tt->zlo = (int32_t)((zlo << (ZL_ATTR_FRAC - 16)) - off); /* 0 .. 63 */
+    tt->zhi = (int32_t)((zhi << (ZL_ATTR_FRAC - 16)) - off);
+    tt->zbase = (zlo >> 2) + (1u << 13);
+    return 1;
+}
+
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height)
 {
     const zl_cached_vertex *v0 = a, *v1 = b, *v2 = c, *tmp;
-    int32_t first, end, mid, ay, d1, d2, cross;
+    int32_t first, end, mid, ax, ay, d1, d2, cross;
     small_frame f;
     zl_attr z;
     /* the same comparisons as sort3, so the same order on ties */
@@ -737,21 +765,17 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
     f.neg = cross < 0;
     f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
-    tt->ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
+    ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
     ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
-    f.ox = tt->ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
+    f.ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
     f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
     f.rows = first - ay;
     if (f.c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
         zl_div_inv_init(&f.inv, f.c32);
-    if (!plane_small(&z, &f, v0->z, d1, d2) || z.dx < INT32_MIN || z.dx > INT32_MAX)
+    if (!plane_small(&z, &f, v0->z, d1, d2) || !tiny_depth(tt, &z, v0->z, v1->z, v2->z))
         return -1;
-    tt->zrow = z.row;
-    tt->zdy = z.dy;
-    tt->zdx = (int32_t)z.dx;
+    tt->ax = ax;
     tt->dz14 = step32(z.dx, ZL_ATTR_FRAC - 14);
-    tt->lo14 = (v0->z < v1->z ? (v0->z < v2->z ? v0->z : v2->z) : (v1->z < v2->z ? v1->z : v2->z)) >> 2;
-    tt->hi14 = (v0->z > v1->z ? (v0->z > v2->z ? v0->z : v2->z) : (v1->z > v2->z ? v1->z : v2->z)) >> 2;
     tt->first = first;
     tt->mid = mid;
     tt->end = end;
@@ -762,14 +786,13 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
 /* Rows [j, j_end) between the long edge and one short edge (RGB565, depth
  * test func with writes); returns the long edge's N after them. */
 static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state *ss, unsigned func, int long_left,
-                                          int32_t j,
-                                          int32_t j_end, int32_t nl, const zl_tiny_edge *se, uint8_t *color,
-                                          int32_t color_stride, uint8_t *depth, int32_t depth_stride,
-                                          uint16_t pixel, int64_t *zrow)
+                                          int32_t j, int32_t j_end, int32_t nl, const zl_tiny_edge *se,
+                                          uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                          int32_t depth_stride, uint16_t pixel, uint32_t *zrow)
 {
     const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
     int32_t ns = se->n;
-    int64_t zr = *zrow;
+    uint32_t zr = *zrow;
     color += (size_t)j * (size_t)color_stride;
     depth += (size_t)j * (size_t)depth_stride;
     for (; j < j_end; j++) {
@@ -779,10 +802,15 @@ static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state
         x1 = x1 > width ? width : x1;
         if (x0 < x1) {
             uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
-            uint32_t zq = depth_start_shifted(zr + (int64_t)(x0 - tt->ax) * tt->zdx, tt->lo14, tt->hi14);
+            /* the depth start of depth_start_shifted, in 32 bits (tiny_depth):
+             * wrapping arithmetic, exact because the sum fits */
+            int32_t v = (int32_t)(zr + (uint32_t)(x0 - tt->ax) * tt->zdx);
+            uint32_t zq;
             int32_t i, n = x1 - x0;
+            v = v < tt->zlo ? tt->zlo : (v > tt->zhi ? tt->zhi : v);
+            zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
             if (n > ZL_SHORT_SPAN) {
-                uint8_t pix[2];
+                uint8_t pix[3] = {0, 0, 0};
                 memcpy(pix, &pixel, 2);
                 zl_span_flat(ss, (uint8_t *)cp, zb, n, zq, tt->dz14, pix);
             } else {
@@ -810,7 +838,7 @@ static ZL_ALWAYS_INLINE void tiny_draw(const zl_tiny *tt, const zl_span_state *s
                                        uint8_t *color, int32_t color_stride, uint8_t *depth, int32_t depth_stride,
                                        uint16_t pixel)
 {
-    int64_t zrow = tt->zrow;
+    uint32_t zrow = tt->zr;
     int32_t nl = tt->lng.n;
     if (tt->first < tt->mid)
         nl = tiny_rows(tt, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
