@@ -814,8 +814,15 @@ static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state
                 memcpy(pix, &pixel, 2);
                 zl_span_flat(ss, (uint8_t *)cp, zb, n, zq, tt->dz14, pix);
             } else {
+                /* No clamp: these pixels are inside the triangle, where the
+                 * plane is within the vertex range; the start is within 2^10
+                 * (Q20) of it and each of at most ZL_SHORT_SPAN - 1 steps
+                 * within one Q14 unit, so zq stays within 32 (Q14) of
+                 * [0, 65535 2^14] + 2^13: below 2^30, where depth_of is a
+                 * shift. (A gradient step32 clamped cannot have two pixels
+                 * inside a triangle.) */
                 for (i = 0; i < n; i++) {
-                    uint32_t d = depth_of(zq);
+                    uint32_t d = zq >> 14;
                     if (depth_pass(func, d, zb[i])) {
                         zb[i] = (uint16_t)d;
                         cp[i] = pixel;
