@@ -226,7 +226,7 @@ static ZL_ALWAYS_INLINE int round_div_frame(int64_t x, const small_frame *f, int
  * and quotients that fit 32 bits (far inside the limits: no saturation).
  * Returns 0 without writing when a quotient does not fit.
  */
-static ZL_NOINLINE int plane_small(zl_attr *at, const small_frame *f, int64_t a0, int32_t d1, int32_t d2)
+static ZL_ALWAYS_INLINE int plane_small(zl_attr *at, const small_frame *f, int64_t a0, int32_t d1, int32_t d2)
 {
     int64_t ga = (int64_t)d1 * f->dy2 - (int64_t)d2 * f->dy1;
     int64_t gb = (int64_t)f->dx1 * d2 - (int64_t)f->dx2 * d1, dx, dy, off;
