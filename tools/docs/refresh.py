@@ -44,7 +44,9 @@ def key_of(title):
 
 
 def sections(text):
-    """{key: table lines} for every '### title' followed by a table."""
+    """{key: table lines} for every '### title' followed by a table. A profile
+    section (key 'SCENE, ... mode ...') keeps the notes under its table too
+    (origin split, libgcc calls, the check line), up to the next heading."""
     found, title, lines = {}, None, text.splitlines()
     for i, line in enumerate(lines):
         if line.startswith("### "):
@@ -53,13 +55,24 @@ def sections(text):
             j = i
             while j < len(lines) and lines[j].startswith("|"):
                 j += 1
+            if is_profile(title):
+                while j < len(lines) and not lines[j].startswith("#"):
+                    j += 1
+                while j > i and lines[j - 1] == "":
+                    j -= 1
             found.setdefault(title, lines[i:j])
             title = None
     return found
 
 
-def replace_table(lines, start, table):
-    """Replace the first table at or after line index start; returns the new lines."""
+def is_profile(key):
+    return re.match(r"[a-z_]+, (frame|scanline) mode", key) is not None
+
+
+def replace_table(lines, start, table, through_notes=False):
+    """Replace the first table at or after line index start (with through_notes,
+    also the lines after it up to the next heading, less trailing blank lines);
+    returns the new lines."""
     i = start
     while i < len(lines) and not lines[i].startswith("|"):
         if lines[i].startswith("#") and i > start:
@@ -68,6 +81,11 @@ def replace_table(lines, start, table):
     j = i
     while j < len(lines) and lines[j].startswith("|"):
         j += 1
+    if through_notes:
+        while j < len(lines) and not lines[j].startswith("#"):
+            j += 1
+        while j > i and lines[j - 1] == "":
+            j -= 1
     return lines[:i] + table + lines[j:]
 
 
@@ -85,7 +103,7 @@ def refresh(doc, secs, vis):
         if m:
             key = m.group(1).strip()
         if key in secs:
-            lines = replace_table(lines, i + 1, secs[key])
+            lines = replace_table(lines, i + 1, secs[key], is_profile(key))
             done.append(key)
         i += 1
     for n, line in enumerate(lines):

@@ -133,8 +133,10 @@ static void stage_setup(const scene *s, const zl_context *ctx)
     }
 }
 
-/* Variant 3: and draw their rows: zl_draw_mesh's loop. With counts != NULL
- * (untimed) also count set-up triangles and written pixels. */
+/* Variant 3: and draw their rows: zl_draw_mesh's loop without the vertex
+ * cache (flat triangles through zl_tri_rows_flat, as it draws them). With
+ * counts != NULL (untimed) also count set-up triangles and written pixels,
+ * row by row. */
 static void stage_rows(const scene *s, const zl_context *ctx, uint32_t *counts)
 {
     static uint16_t before[W];
@@ -155,6 +157,11 @@ static void stage_rows(const scene *s, const zl_context *ctx, uint32_t *counts)
                 continue;
             if (counts != NULL)
                 counts[0]++;
+            if (counts == NULL && !ss.gouraud) {
+                /* flat: all rows at once, as zl_draw_mesh draws them */
+                zl_tri_rows_flat(&tri, &ss, (uint8_t *)color_buf, W * 2, (uint8_t *)depth_buf, W * 2);
+                continue;
+            }
             do {
                 int32_t row = tri.row;
                 uint16_t *z = depth_buf + (size_t)row * W;
