@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
 
-    python3 tools/docs/refresh.py [--cortex-m BUILD_DIR]
+    python3 tools/docs/refresh.py [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
-KEY=total_vcache), splits their output into sections ("### title" plus the markdown table
-under it) and, in every document:
-  * replaces the table under a heading "### title" with the table of the section of that
+KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny (a host build with
+the render command's targets, and valgrind), splits their output into sections ("### title"
+plus the markdown table under it) and, in every document:
+  * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
   * replaces the table after a line "<!-- measured: title -->" the same way;
   * replaces the instruction column of the README's visibility table (rows mapped below).
@@ -49,8 +50,8 @@ def sections(text):
     (origin split, libgcc calls, the check line), up to the next heading."""
     found, title, lines = {}, None, text.splitlines()
     for i, line in enumerate(lines):
-        if line.startswith("### "):
-            title = key_of(line[4:])
+        if re.match(r"#{3,4} ", line):
+            title = key_of(line.split(" ", 1)[1])
         elif title and line.startswith("|"):
             j = i
             while j < len(lines) and lines[j].startswith("|"):
@@ -97,8 +98,8 @@ def refresh(doc, secs, vis):
     while i < len(lines):
         line = lines[i]
         key = None
-        if line.startswith("### "):
-            key = key_of(line[4:])
+        if re.match(r"#{3,4} ", line):
+            key = key_of(line.split(" ", 1)[1])
         m = re.match(r"<!-- measured: (.*) -->$", line)
         if m:
             key = m.group(1).strip()
@@ -116,10 +117,17 @@ def refresh(doc, secs, vis):
 
 
 def main():
-    build = "build/cortex-m4-bench"
-    if len(sys.argv) == 3 and sys.argv[1] == "--cortex-m":
-        build = sys.argv[2]
+    build, host = "build/cortex-m4-bench", None
+    args = sys.argv[1:]
+    while len(args) >= 2 and args[0] in ("--cortex-m", "--host"):
+        if args[0] == "--cortex-m":
+            build = args[1]
+        else:
+            host = args[1]
+        args = args[2:]
     text = run(["sh", "port/cortex-m/bench/measure.sh", build])
+    if host:
+        text += "\n" + run(["sh", "tools/bench/measure.sh", host, "port/host/models/bunny.obj"])
     text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
     vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
     vc = vc.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")
