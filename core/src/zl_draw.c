@@ -196,39 +196,40 @@ static ZL_NOINLINE int setup_general(const zl_context *ctx, const zl_source *src
     return 1;
 }
 
-/*
- * Triangle t of a plain flat draw from the vertex cache: the same record as
- * zl_tri_polygon_geom + may_draw + zl_tri_shade + zl_tri_piece give (one
- * piece, no offset, the lit flat colour), classified once, and culled
- * triangles are never shaded. Returns 0 when a vertex needs clipping: then
- * the general path draws the triangle.
- */
-static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
-                       int cull_sign, int tiny)
+/* Triangle t of any draw through the general path: polygon (clipped when
+ * it must be), cull, shade, pieces. Out of line, so its big frame (a
+ * textured polygon) is not on the stack of the fast loop. */
+static ZL_NOINLINE void draw_general(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
+                                     int planes)
 {
-    const uint16_t *idx = &src->mesh->indices[t * 3u];
-    const zl_cached_vertex *c0 = &src->cache[idx[0]], *c1 = &src->cache[idx[1]], *c2 = &src->cache[idx[2]];
+    zl_tpoly tpoly; /* the texture attributes are only filled when the style needs them */
+    zl_poly *poly = &tpoly.p;
+    if (!(planes ? zl_tri_polygon_tex(src, &ctx->style, t, &tpoly) : zl_tri_polygon_geom(src, &ctx->style, t, poly)) ||
+        !may_draw(src, &ctx->style, poly))
+        return;
+    zl_tri_shade(src, t, poly);
+    draw_pieces(ctx, src, t, poly, ss);
+}
+
+/*
+ * A visible triangle of a plain flat draw from the vertex cache (the caller
+ * culled it): the same record as zl_tri_polygon_geom + may_draw +
+ * zl_tri_shade + zl_tri_piece give (one piece, no offset, the lit flat
+ * colour), classified once. With `tiny` (zl_tiny_span_state) a small
+ * triangle needs no record at all.
+ */
+static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
+                                     const zl_cached_vertex *const *c, int tiny)
+{
     zl_poly poly;
     zl_active tri;
-    int64_t area;
     int set;
-    if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
-        /* a marker: dropped as zl_tri_polygon_geom drops it, or clipped */
-        return c0->x == ZL_CACHE_INVALID || c1->x == ZL_CACHE_INVALID || c2->x == ZL_CACHE_INVALID;
-    }
-    /* Most culled triangles end here, before any copy: zl_tri_classify's
-     * area test on the cached coordinates (int16, so the products fit). */
-    area = (int64_t)((int32_t)c1->x - c0->x) * ((int32_t)c2->y - c0->y) -
-           (int64_t)((int32_t)c2->x - c0->x) * ((int32_t)c1->y - c0->y);
-    if (area == 0 || (area < 0 ? -1 : 1) == cull_sign)
-        return 1;
     poly.n = 0; /* flat: no vertex colours for the lighting to scale */
     if (tiny) {
-        /* the common case: no record at all (zl_tiny_draw) */
         zl_tiny tt;
-        set = zl_tiny_setup(&tt, c0, c1, c2, src->width, src->height);
+        set = zl_tiny_setup(&tt, c[0], c[1], c[2], src->width, src->height);
         if (set == 0)
-            return 1;
+            return;
         if (set > 0) {
             uint8_t pix[3] = {0, 0, 0};
             uint16_t pixel;
@@ -237,21 +238,55 @@ static int draw_cached(const zl_context *ctx, const zl_source *src, uint32_t t, 
             memcpy(&pixel, pix, 2);
             zl_tiny_draw(&tt, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride, (uint8_t *)ctx->target.depth,
                          ctx->target.depth_stride, pixel);
-            return 1;
+            return;
         }
     }
-    set = zl_tri_setup_flat(&tri, c0, c1, c2, src->width, src->height);
+    set = zl_tri_setup_flat(&tri, c[0], c[1], c[2], src->width, src->height);
     if (set == 0)
-        return 1;
-    if (set < 0 && !setup_general(ctx, src, idx, &poly, &tri))
-        return 1;
+        return;
+    if (set < 0 && !setup_general(ctx, src, &src->mesh->indices[t * 3u], &poly, &tri))
+        return;
     zl_tri_shade(src, t, &poly);
     tri.rgb[0] = poly.flat.r;
     tri.rgb[1] = poly.flat.g;
     tri.rgb[2] = poly.flat.b;
     tri.light = poly.light;
     draw_rows(ctx, &tri, NULL, NULL, ss);
-    return 1;
+}
+
+/*
+ * Every triangle of a plain flat draw with the vertex cache. Most culled
+ * triangles end in this loop, before any copy: zl_tri_classify's area test
+ * on the cached int16 coordinates (the products fit 64 bits). A triangle
+ * with a marked vertex is dropped (invalid, as zl_tri_polygon_geom drops
+ * it) or takes the general path (clipped).
+ */
+static void draw_plain(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, int cull_sign, int tiny)
+{
+    const uint16_t *idx = src->mesh->indices;
+    const zl_cached_vertex *cache = src->cache;
+    uint32_t t, n = src->mesh->triangle_count;
+    for (t = 0; t < n; t++, idx += 3) {
+        const zl_cached_vertex *c[3];
+        int32_t x0, x1, x2, y0;
+        int64_t area;
+        c[0] = cache + idx[0];
+        c[1] = cache + idx[1];
+        c[2] = cache + idx[2];
+        x0 = c[0]->x;
+        x1 = c[1]->x;
+        x2 = c[2]->x;
+        if (x0 <= ZL_CACHE_INVALID || x1 <= ZL_CACHE_INVALID || x2 <= ZL_CACHE_INVALID) {
+            if (x0 != ZL_CACHE_INVALID && x1 != ZL_CACHE_INVALID && x2 != ZL_CACHE_INVALID)
+                draw_general(ctx, src, t, ss, 0);
+            continue;
+        }
+        y0 = c[0]->y;
+        area = (int64_t)(x1 - x0) * (c[2]->y - y0) - (int64_t)(x2 - x0) * (c[1]->y - y0);
+        if (area == 0 || (area < 0 ? -1 : 1) == cull_sign)
+            continue;
+        draw_visible(ctx, src, t, ss, c, tiny);
+    }
 }
 
 /* The sign of the window-space area (zl_tri_classify's) of the triangles the
@@ -298,7 +333,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state ss;
     zl_status st;
     uint32_t t;
-    int planes, plain, cull_sign, tiny;
+    int planes;
     st = check_context(ctx);
     if (st == ZL_OK)
         st = zl_check_mesh(mesh, mvp == NULL);
@@ -321,21 +356,13 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
-    plain = src.cache != NULL && plain_flat(ctx);
-    cull_sign = culled_area_sign(&ctx->state);
-    tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
-    for (t = 0; t < mesh->triangle_count; t++) {
-        zl_tpoly tpoly; /* the texture attributes are only filled when the style needs them */
-        zl_poly *poly = &tpoly.p;
-        if (plain && draw_cached(ctx, &src, t, &ss, cull_sign, tiny))
-            continue;
-        if (!(planes ? zl_tri_polygon_tex(&src, &ctx->style, t, &tpoly)
-                     : zl_tri_polygon_geom(&src, &ctx->style, t, poly)) ||
-            !may_draw(&src, &ctx->style, poly))
-            continue;
-        zl_tri_shade(&src, t, poly);
-        draw_pieces(ctx, &src, t, poly, &ss);
+    if (src.cache != NULL && plain_flat(ctx)) {
+        draw_plain(ctx, &src, &ss, culled_area_sign(&ctx->state),
+                   zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth));
+        return ZL_OK;
     }
+    for (t = 0; t < mesh->triangle_count; t++)
+        draw_general(ctx, &src, t, &ss, planes);
     return ZL_OK;
 }
 
