@@ -255,18 +255,21 @@ static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source
 }
 
 /*
- * Every triangle of a plain flat draw with the vertex cache. Most culled
- * triangles end in this loop, before any copy: zl_tri_classify's area test
- * on the cached int16 coordinates (the products fit 64 bits). A triangle
- * with a marked vertex is dropped (invalid, as zl_tri_polygon_geom drops
- * it) or takes the general path (clipped).
+ * The triangles from t on of a plain flat draw with the vertex cache, up to
+ * the first that needs the general path (a vertex to clip): returns its
+ * index, or the triangle count. Most culled triangles end in this loop,
+ * before any copy: zl_tri_classify's area test on the cached int16
+ * coordinates (the products fit 64 bits). A triangle with an invalid
+ * vertex is dropped, as zl_tri_polygon_geom drops it. The caller runs the
+ * general path, so its stack is not added to this loop's.
  */
-static void draw_plain(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, int cull_sign, int tiny)
+static uint32_t draw_plain(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, uint32_t t,
+                           int cull_sign, int tiny)
 {
-    const uint16_t *idx = src->mesh->indices;
+    const uint16_t *idx = src->mesh->indices + t * 3u;
     const zl_cached_vertex *cache = src->cache;
-    uint32_t t, n = src->mesh->triangle_count;
-    for (t = 0; t < n; t++, idx += 3) {
+    uint32_t n = src->mesh->triangle_count;
+    for (; t < n; t++, idx += 3) {
         const zl_cached_vertex *c[3];
         int32_t x0, x1, x2, y0;
         int64_t area;
@@ -278,7 +281,7 @@ static void draw_plain(const zl_context *ctx, const zl_source *src, const zl_spa
         x2 = c[2]->x;
         if (x0 <= ZL_CACHE_INVALID || x1 <= ZL_CACHE_INVALID || x2 <= ZL_CACHE_INVALID) {
             if (x0 != ZL_CACHE_INVALID && x1 != ZL_CACHE_INVALID && x2 != ZL_CACHE_INVALID)
-                draw_general(ctx, src, t, ss, 0);
+                return t;
             continue;
         }
         y0 = c[0]->y;
@@ -287,6 +290,7 @@ static void draw_plain(const zl_context *ctx, const zl_source *src, const zl_spa
             continue;
         draw_visible(ctx, src, t, ss, c, tiny);
     }
+    return n;
 }
 
 /* The sign of the window-space area (zl_tri_classify's) of the triangles the
@@ -357,8 +361,11 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
     if (src.cache != NULL && plain_flat(ctx)) {
-        draw_plain(ctx, &src, &ss, culled_area_sign(&ctx->state),
-                   zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth));
+        int cull_sign = culled_area_sign(&ctx->state);
+        int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
+        for (t = draw_plain(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;
+             t = draw_plain(ctx, &src, &ss, t + 1, cull_sign, tiny))
+            draw_general(ctx, &src, t, &ss, 0);
         return ZL_OK;
     }
     for (t = 0; t < mesh->triangle_count; t++)

@@ -698,20 +698,17 @@ static ZL_ALWAYS_INLINE int32_t tiny_x(int32_t n, int32_t d)
  * triangle for a sliver): they are kept modulo 2^32, which leaves a sum
  * that fits exact. 0 when the depth range is too wide.
  */
-static int tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t z0, uint32_t z1, uint32_t z2)
+static void tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t zlo, uint32_t zhi)
 {
-    uint32_t zlo = z0 < z1 ? (z0 < z2 ? z0 : z2) : (z1 < z2 ? z1 : z2);
-    uint32_t zhi = z0 > z1 ? (z0 > z2 ? z0 : z2) : (z1 > z2 ? z1 : z2);
     uint32_t off = (zlo >> 2) << (ZL_ATTR_FRAC - 14); /* the low word of off, which is all that matters */
-    if (zhi - zlo >= (1u << 25))
-        return 0;
     tt->zr = (uint32_t)(uint64_t)z->row - off;
     tt->zdy = (uint32_t)(uint64_t)z->dy;
     tt->zdx = (uint32_t)(uint64_t)z->dx;
     tt->zlo = (int32_t)((zlo << (ZL_ATTR_FRAC - 16)) - off); /* 0 .. 63 */
     tt->zhi = (int32_t)((zhi << (ZL_ATTR_FRAC - 16)) - off);
     tt->zbase = (zlo >> 2) + (1u << 13);
-    return 1;
+    /* step32 of a gradient below 2^32 (plane_small's quotients): no clamp */
+    tt->dz14 = (uint32_t)zl_floor_shift64(z->dx, ZL_ATTR_FRAC - 14);
 }
 
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
@@ -719,6 +716,7 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
 {
     const zl_cached_vertex *v0 = a, *v1 = b, *v2 = c, *tmp;
     int32_t first, end, mid, ax, ay, d1, d2, cross;
+    uint32_t zlo, zhi;
     small_frame f;
     zl_attr z;
     /* the same comparisons as sort3, so the same order on ties */
@@ -756,9 +754,13 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
      * N = (xt - 8) dy + (16 j + 8 - yt) dx, on its rows, stays below
      * 2^13 (2^13 + 8 + 2^14) < 2^28 in magnitude, the cross product below
      * 2^29, and 32-bit arithmetic is exact. */
+    zlo = v0->z < v1->z ? (v0->z < v2->z ? v0->z : v2->z) : (v1->z < v2->z ? v1->z : v2->z);
+    zhi = v0->z > v1->z ? (v0->z > v2->z ? v0->z : v2->z) : (v1->z > v2->z ? v1->z : v2->z);
     if (a->x <= -8192 || a->x >= 8192 || b->x <= -8192 || b->x >= 8192 || c->x <= -8192 || c->x >= 8192 ||
-        f.dy2 >= 8192 || !depth_diff32(v1->z, v0->z, &d1) || !depth_diff32(v2->z, v0->z, &d2))
+        f.dy2 >= 8192 || zhi - zlo >= (1u << 25)) /* (tiny_depth's bound) */
         return -1;
+    d1 = (int32_t)(v1->z - v0->z); /* below 2^25 in magnitude */
+    d2 = (int32_t)(v2->z - v0->z);
     tiny_edge_init(&tt->lng, v0->x, v0->y, v2->x, v2->y, first);
     tiny_edge_init(&tt->up, v0->x, v0->y, v1->x, v1->y, first);
     tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
@@ -772,10 +774,10 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
     f.rows = first - ay;
     if (f.c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
         zl_div_inv_init(&f.inv, f.c32);
-    if (!plane_small(&z, &f, v0->z, d1, d2) || !tiny_depth(tt, &z, v0->z, v1->z, v2->z))
+    if (!plane_small(&z, &f, v0->z, d1, d2))
         return -1;
+    tiny_depth(tt, &z, zlo, zhi);
     tt->ax = ax;
-    tt->dz14 = step32(z.dx, ZL_ATTR_FRAC - 14);
     tt->first = first;
     tt->mid = mid;
     tt->end = end;
