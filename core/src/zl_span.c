@@ -152,6 +152,9 @@ static ZL_NOINLINE int32_t flat_pair_run_lequal(uint16_t *cend, uint16_t *zend, 
     return flat_pair_run(ZL_LEQUAL, cend, zend, i, r);
 }
 
+/* Pixels taken one by one after a failing pair (even). */
+#define ZL_FAIL_STRETCH 64
+
 /* 2m pixels from 4-byte aligned rows: runs of passing pairs, and between
  * them a pair with a failing test pixel by pixel. A pair the run wrote
  * before it failed is redone too: its test fails now for LESS (d < d) and
@@ -180,9 +183,15 @@ static inline void span_flat_pairs(unsigned func, uint16_t *crow, uint16_t *zrow
             i += 2;
             continue;
         }
-        flat_pixel(func, cend + i, zend + i, y >> 16, pixel);
-        flat_pixel(func, cend + i + 1, zend + i + 1, (y + dy) >> 16, pixel);
-        i += 2;
+        {
+            /* A pair failed: the next pixels of an occluded stretch are
+             * likely to fail too, where a run would stop at once; take up to
+             * ZL_FAIL_STRETCH of them one by one (a whole number of pairs,
+             * so the runs stay aligned). */
+            int32_t stop = i + ZL_FAIL_STRETCH < 0 ? i + ZL_FAIL_STRETCH : 0;
+            for (; i != stop; i++, y += dy)
+                flat_pixel(func, cend + i, zend + i, y >> 16, pixel);
+        }
     }
 }
 
