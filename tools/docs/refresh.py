@@ -4,8 +4,8 @@
     python3 tools/docs/refresh.py [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
-KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny (a host build with
-the render command's targets, and valgrind), splits their output into sections ("### title"
+KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny and
+tools/visbench/measure.sh (a host build with the render command's targets, and valgrind), splits their output into sections ("### title"
 plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
@@ -128,6 +128,7 @@ def main():
     text = run(["sh", "port/cortex-m/bench/measure.sh", build])
     if host:
         text += "\n" + run(["sh", "tools/bench/measure.sh", host, "port/host/models/bunny.obj"])
+        text += "\n" + run(["sh", "tools/visbench/measure.sh", host])
     text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
     vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
     vc = vc.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")

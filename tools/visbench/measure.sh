@@ -19,7 +19,7 @@ echo "### RAM and agreement with the ray caster (320x240)"
 echo
 "$vb" "$models"
 echo
-echo "### Instructions per frame on the host (x86-64, callgrind, build type of $build)"
+echo "### Instructions per frame on the host, per visibility method (x86-64, callgrind)"
 echo
 echo "| method | bunny | spider | intersect | layers |"
 echo "|---|---:|---:|---:|---:|"
