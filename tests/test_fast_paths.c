@@ -1,0 +1,156 @@
+/*
+ * The fast path of frame mode against the general path, byte for byte.
+ *
+ * With a vertex cache, a plain flat RGB565 draw takes zl_tiny_setup /
+ * zl_tiny_draw (small triangles: edges by one division per row, depth in 32
+ * bits relative to the lowest vertex, short spans without a depth clamp) or
+ * zl_tri_setup_flat; without a cache every triangle takes the general
+ * polygon path with its exact DDA edges and 64-bit planes. The two are
+ * separate implementations of one raster contract, so the same meshes must
+ * give the same colour and depth bytes. The meshes are small triangles the
+ * way real models have them, plus the cases the fast path's arguments rest
+ * on: depths at 0 and at the far end (the unclamped short spans), wide depth
+ * ranges (over the 2^25 bound), slivers with steep gradients, vertices
+ * beyond 512 pixels (the 32-bit bounds), triangles across the target's
+ * edges, and the four combinations of LESS / LEQUAL with back-face culling
+ * on and off.
+ */
+#include <string.h>
+
+#include "unity.h"
+#include "zline/zline.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+enum { W = 96, H = 64, NT = 200, NV = 3 * NT };
+
+static uint32_t rng = 0xC0FFEEu;
+static uint32_t next_rand(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    return rng;
+}
+static int32_t rand_range(int32_t lo, int32_t hi) /* inclusive */
+{
+    return lo + (int32_t)(next_rand() % (uint32_t)(hi - lo + 1));
+}
+
+static zl_fixed pos[NV * 3];
+static uint16_t idx[NT * 3];
+static uint8_t fcol[NT * 3];
+static uint16_t color_a[W * H], color_b[W * H], depth_a[W * H], depth_b[W * H];
+static uint32_t vcache[NV * 2]; /* ZL_VERTEX_CACHE_BYTES(NV) */
+
+/* A depth in Q16.16 (0 .. 1 in pixel space): kind 0 anywhere, 1 near the
+ * far end, 2 near 0, 3 anywhere beyond the range (clipped to it). */
+static zl_fixed rand_depth(int kind)
+{
+    switch (kind) {
+    case 1:
+        return ZL_FX_ONE - rand_range(0, 40);
+    case 2:
+        return rand_range(0, 40);
+    case 3:
+        return rand_range(-ZL_FX_ONE / 8, ZL_FX_ONE + ZL_FX_ONE / 8);
+    default:
+        return rand_range(0, ZL_FX_ONE);
+    }
+}
+
+/* Triangles of a few pixels around random centres (some across the edges
+ * of the target, some far beyond 512 pixels), a few slivers and large ones;
+ * depth per triangle near one value, or spread when `wide`. */
+static void random_mesh(int depth_kind, int wide)
+{
+    int t, k;
+    for (t = 0; t < NT; t++) {
+        int32_t cx = rand_range(-8, W + 8), cy = rand_range(-8, H + 8), size = rand_range(1, 12);
+        zl_fixed z = rand_depth(depth_kind);
+        int shape = rand_range(0, 19);
+        if (shape == 0) { /* far outside the 32-bit shortcuts */
+            cx += rand_range(0, 1) ? 700 : -700;
+            size = 40;
+        } else if (shape == 1) {
+            size = 60; /* large */
+        }
+        for (k = 0; k < 3; k++) {
+            int32_t v = t * 3 + k;
+            int32_t dx = rand_range(-size, size), dy = rand_range(-size, size);
+            if (shape == 2 && k == 2) { /* a sliver: the third vertex near the first two's line */
+                dx = (rand_range(-size, size) + rand_range(-size, size)) / 2;
+                dy = dx + rand_range(-1, 1);
+            }
+            pos[v * 3] = (cx + dx) * ZL_FX_ONE + rand_range(0, ZL_FX_ONE - 1);
+            pos[v * 3 + 1] = (cy + dy) * ZL_FX_ONE + rand_range(0, ZL_FX_ONE - 1);
+            pos[v * 3 + 2] = wide ? rand_depth(depth_kind) : z + rand_range(-300, 300);
+            idx[t * 3 + k] = (uint16_t)v;
+        }
+        fcol[t * 3] = (uint8_t)next_rand();
+        fcol[t * 3 + 1] = (uint8_t)next_rand();
+        fcol[t * 3 + 2] = (uint8_t)next_rand();
+    }
+}
+
+static void draw(uint16_t *color, uint16_t *depth, int cached, const zl_state *st, const zl_mesh *m)
+{
+    zl_target tg;
+    zl_context ctx;
+    zl_rgb bg = {1, 2, 3};
+    memset(&tg, 0, sizeof tg);
+    tg.color = color;
+    tg.color_stride = W * 2;
+    tg.depth = depth;
+    tg.depth_stride = W * 2;
+    tg.width = W;
+    tg.height = H;
+    tg.format = ZL_FORMAT_RGB565;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
+    ctx.state = *st;
+    if (cached) {
+        ctx.vertex_cache = vcache;
+        ctx.vertex_cache_bytes = sizeof vcache;
+    }
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, NULL));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, NULL)); /* again: every fragment ties */
+}
+
+static void test_cached_small_triangles_equal_the_general_path(void)
+{
+    zl_mesh m;
+    long written = 0;
+    int scene;
+    memset(&m, 0, sizeof m);
+    m.positions = pos;
+    m.indices = idx;
+    m.face_colors = fcol;
+    m.vertex_count = NV;
+    m.triangle_count = NT;
+    for (scene = 0; scene < 64; scene++) {
+        zl_state st;
+        int i;
+        zl_state_default(&st);
+        st.depth_func = (scene & 1) ? ZL_LEQUAL : ZL_LESS;
+        st.cull = (scene & 2) ? ZL_CULL_BACK : ZL_CULL_NONE;
+        st.light_on = (uint8_t)((scene >> 2) & 1);
+        random_mesh((scene >> 3) & 3, (scene >> 5) & 1);
+        draw(color_a, depth_a, 1, &st, &m);
+        draw(color_b, depth_b, 0, &st, &m);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_b, depth_a, sizeof depth_a, "depth differs from the general path");
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_b, color_a, sizeof color_a, "colour differs from the general path");
+        for (i = 0; i < W * H; i++)
+            written += depth_a[i] != 65535;
+    }
+    /* The scenes must cover a good part of the target for the comparison to mean anything. */
+    TEST_ASSERT_GREATER_THAN(64L * W * H / 4, written);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_cached_small_triangles_equal_the_general_path);
+    return UNITY_END();
+}
