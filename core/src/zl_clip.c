@@ -561,8 +561,8 @@ static unsigned shift_below(int64_t big, unsigned bits)
 /* trunc(c / 4) clamped to [-2^14, 2^14]: the light direction in Q14. */
 static ZL_ALWAYS_INLINE int32_t light_q14(zl_fixed c)
 {
-    /* c / 4 as floor((c + 3) / 4) for negative c: the 3 is the sign's top two bits */
-    int32_t v = zl_floor_shift32(c + (int32_t)((uint32_t)zl_floor_shift32(c, 31) >> 30), 2);
+    /* c / 4 as floor((c + 3) / 4) for negative c */
+    int32_t v = zl_floor_shift32(c + (c < 0 ? 3 : 0), 2);
     if ((uint32_t)v + (1u << 14) > (1u << 15))
         v = v < 0 ? -(1 << 14) : (1 << 14);
     return v;

@@ -33,7 +33,7 @@ struct zl_frame_mesh {
     zl_state state;
     zl_span_state span;
     uint8_t flags;      /* MESH_*, in bytes that were padding: the layout does not change */
-    int8_t cull_sign;   /* culled_area_sign of the state */
+    uint8_t cull_code;  /* culled_area_sign of the state, plus 1 (0, 1 or 2) */
     uint32_t tri_base, vert_base;
 };
 
@@ -271,7 +271,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     set_ext(f, f->mesh_count, style, lines, omesh, outline);
     m->flags = (uint8_t)((lines == NULL && outline == NULL ? mesh_flags(m, style_of(f, f->mesh_count)) : 0u) |
                          (mvp != NULL ? MESH_MVP : 0u) | (cached ? MESH_CACHED : 0u));
-    m->cull_sign = (int8_t)culled_area_sign(state);
+    m->cull_code = (uint8_t)(culled_area_sign(state) + 1);
     f->mesh_count++;
     f->vertex_count += mesh->vertex_count;
     f->triangle_total += mesh->triangle_count;
@@ -458,8 +458,10 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
                                             const zl_cached_vertex *c, int cull_sign, uint16_t width,
                                             uint16_t height, int32_t *first, int32_t *end)
 {
-    int32_t ymin = a->y, ymax = a->y, xmin = a->x, xmax = a->x;
+    int32_t ymin = a->y, xmin = a->x, ymax, xmax;
     int64_t p = (int64_t)(b->x - a->x) * (c->y - a->y), q = (int64_t)(c->x - a->x) * (b->y - a->y);
+    ymax = ymin;
+    xmax = xmin;
     if (p == q || (p < q ? -1 : 1) == cull_sign)
         return 0;
     if (b->y < ymin)
@@ -528,7 +530,7 @@ static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_
     const zl_cached_vertex *cache = s->cache;
     uint16_t *row_start = f->row_start, *visible = f->visible;
     int32_t *diff = p->diff;
-    int cull_sign = m->cull_sign;
+    int cull_sign = (int)m->cull_code - 1;
     for (t = 0; t < count; t++, id++, idx += 3) {
         int32_t first, end;
         const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
@@ -625,7 +627,8 @@ static ZL_NOINLINE zl_status plan(zl_frame *f)
     uint16_t h = f->cfg.height, j;
     size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));
     plan_pass p;
-    (void)layout_of(&f->cfg, &l); /* valid: zl_frame_begin checked it */
+    if (!layout_of(&f->cfg, &l)) /* cannot fail: zl_frame_begin checked the configuration */
+        return ZL_ERR_ARG;
     /* Until the first row the pool (after the difference array), the
      * Gouraud records and everything from the texture planes to the colour
      * bands are free: room for the first rows of the visible primitives,
@@ -739,13 +742,13 @@ static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_so
                                             zl_poly *poly)
 {
     const zl_frame_mesh *m = &f->meshes[mi];
-    const uint16_t *idx = &m->mesh.indices[t * 3u];
+    const uint16_t *idx = m->mesh.indices + t * 3u;
     const zl_cached_vertex *c[3];
-    uint16_t slot = f->free_head;
+    uint16_t slot = f->free_head, i0 = idx[0], i1 = idx[1], i2 = idx[2];
     zl_active *a;
-    c[0] = &s->cache[idx[0]];
-    c[1] = &s->cache[idx[1]];
-    c[2] = &s->cache[idx[2]];
+    c[0] = s->cache + i0;
+    c[1] = s->cache + i1;
+    c[2] = s->cache + i2;
     if (c[0]->x <= ZL_CACHE_INVALID || c[1]->x <= ZL_CACHE_INVALID || c[2]->x <= ZL_CACHE_INVALID)
         return 0;
     if (slot == ZL_LIST_END)

@@ -457,6 +457,7 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
     pf.dy2 = (int64_t)v[2]->y - v[0]->y;
     pf.c = cross;
     pf.inv = NULL;
+    pf.c32 = 0;
     if (cross != 0 && cross >= -(int64_t)UINT32_MAX && cross <= (int64_t)UINT32_MAX) {
         pf.c32 = (uint32_t)(cross < 0 ? -cross : cross);
         zl_div_inv_init(&inv, pf.c32);
