@@ -629,7 +629,7 @@ static ZL_NOINLINE void large_normal(const zl_fixed *pos, const uint16_t *idx, i
  * 2^14). The shift to 14 bits is the bit length of the largest component,
  * which is the bit length of the OR of all three.
  */
-static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *idx)
+static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *idx, const int32_t *lq)
 {
     const zl_fixed *pos = s->mesh->positions;
     const zl_fixed *p0 = &pos[idx[0] * 3u], *p1 = &pos[idx[1] * 3u], *p2 = &pos[idx[2] * 3u];
@@ -664,9 +664,7 @@ static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *i
     }
     /* light_dir is a unit vector in Q16; in Q14, clamped to [-1, 1], the three
      * products and their sum stay inside 32 bits whatever the caller passed. */
-    dot = m0 * light_q14(st->light_dir.x) + m1 * light_q14(st->light_dir.y) + m2 * light_q14(st->light_dir.z);
-    if (st->front_face == ZL_FRONT_CW)
-        dot = -dot;
+    dot = m0 * lq[0] + m1 * lq[1] + m2 * lq[2]; /* zl_light_prepare: front-face sign included */
     if (dot <= 0)
         return st->ambient; /* before the square root: a zero normal has dot 0 */
     len = zl_isqrt32((uint32_t)(m0 * m0 + m1 * m1 + m2 * m2)); /* >= 1: the normal is not 0 */
@@ -705,7 +703,8 @@ static ZL_ALWAYS_INLINE zl_rgb face_color(const zl_source *s, uint32_t t)
 }
 
 /* Flat colour and lighting of source triangle t into poly. */
-static ZL_ALWAYS_INLINE void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *poly)
+static ZL_ALWAYS_INLINE void shade(const zl_source *s, uint32_t t, const uint16_t *idx, zl_poly *poly,
+                                    const int32_t *lq)
 {
     unsigned i, k, n;
     uint32_t any = 0;
@@ -715,7 +714,7 @@ static ZL_ALWAYS_INLINE void shade(const zl_source *s, uint32_t t, const uint16_
         poly->light = 255;
         return;
     }
-    i = face_intensity(s, idx); /* first: fewer values live across it */
+    i = face_intensity(s, idx, lq); /* first: fewer values live across it */
     c = face_color(s, t);
     n = poly->n;
     poly->light = (uint8_t)i;
@@ -909,9 +908,26 @@ int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_t
     return zl_tri_polygon_geom(s, sty, t, &out->p);
 }
 
+void zl_light_prepare(const zl_state *st, int32_t lq[3])
+{
+    /* the dot product's sign flips with the winding of the front face:
+     * flipping the light instead gives the same sum, once per draw */
+    int32_t sign = st->front_face == ZL_FRONT_CW ? -1 : 1;
+    lq[0] = sign * light_q14(st->light_dir.x);
+    lq[1] = sign * light_q14(st->light_dir.y);
+    lq[2] = sign * light_q14(st->light_dir.z);
+}
+
+void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32_t lq[3])
+{
+    shade(s, t, &s->mesh->indices[t * 3u], poly, lq);
+}
+
 void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly)
 {
-    shade(s, t, &s->mesh->indices[t * 3u], poly);
+    int32_t lq[3];
+    zl_light_prepare(s->state, lq);
+    shade(s, t, &s->mesh->indices[t * 3u], poly, lq);
 }
 
 int zl_tri_polygon_ex(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out)

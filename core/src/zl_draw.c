@@ -219,7 +219,7 @@ static ZL_NOINLINE void draw_general(const zl_context *ctx, const zl_source *src
  * triangle needs no record at all.
  */
 static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
-                                     const zl_cached_vertex *const *c, int tiny)
+                                     const zl_cached_vertex *const *c, int tiny, const int32_t *lq)
 {
     zl_poly poly;
     zl_active tri;
@@ -233,7 +233,7 @@ static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source
         if (set > 0) {
             uint8_t pix[3] = {0, 0, 0};
             uint16_t pixel;
-            zl_tri_shade(src, t, &poly);
+            zl_tri_shade_lit(src, t, &poly, lq);
             pack_color(ZL_FORMAT_RGB565, poly.flat.r, poly.flat.g, poly.flat.b, pix);
             memcpy(&pixel, pix, 2);
             zl_tiny_draw(&tt, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride, (uint8_t *)ctx->target.depth,
@@ -266,9 +266,11 @@ static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source
 static uint32_t draw_plain(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, uint32_t t,
                            int cull_sign, int tiny)
 {
+    int32_t lq[3];
     const uint16_t *idx = src->mesh->indices + t * 3u;
     const zl_cached_vertex *cache = src->cache;
     uint32_t n = src->mesh->triangle_count;
+    zl_light_prepare(&ctx->state, lq);
     for (; t < n; t++, idx += 3) {
         const zl_cached_vertex *c[3];
         int32_t x0, x1, x2, y0;
@@ -288,7 +290,7 @@ static uint32_t draw_plain(const zl_context *ctx, const zl_source *src, const zl
         area = (int64_t)(x1 - x0) * (c[2]->y - y0) - (int64_t)(x2 - x0) * (c[1]->y - y0);
         if (area == 0 || (area < 0 ? -1 : 1) == cull_sign)
             continue;
-        draw_visible(ctx, src, t, ss, c, tiny);
+        draw_visible(ctx, src, t, ss, c, tiny, lq);
     }
     return n;
 }

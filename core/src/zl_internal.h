@@ -232,6 +232,11 @@ int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_t
  * zl_tri_shade (lighting costs a square root: only for drawn triangles). */
 int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out);
 void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly);
+/* The light of a state as zl_tri_shade_lit takes it (Q14, clamped, with the
+ * front face's sign), once per draw instead of once per triangle. */
+void zl_light_prepare(const zl_state *st, int32_t lq[3]);
+/* zl_tri_shade with the light prepared from s->state by zl_light_prepare. */
+void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32_t lq[3]);
 
 /* ---- zl_raster.c */
 /* Cull and bound fan triangle (a, b, c). Returns 1 and the row range
