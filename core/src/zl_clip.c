@@ -918,6 +918,19 @@ void zl_light_prepare(const zl_state *st, int32_t lq[3])
     lq[2] = sign * light_q14(st->light_dir.z);
 }
 
+uint16_t zl_tri_pixel565_lit(const zl_source *s, uint32_t t, const int32_t lq[3])
+{
+    zl_rgb c = face_color(s, t);
+    unsigned r = c.r, g = c.g, b = c.b;
+    if (s->state->light_on) {
+        unsigned i = face_intensity(s, &s->mesh->indices[t * 3u], lq);
+        r = scale255(r, i);
+        g = scale255(g, i);
+        b = scale255(b, i);
+    }
+    return (uint16_t)(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+}
+
 void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32_t lq[3])
 {
     shade(s, t, &s->mesh->indices[t * 3u], poly, lq);

@@ -231,13 +231,8 @@ static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source
         if (set == 0)
             return;
         if (set > 0) {
-            uint8_t pix[3] = {0, 0, 0};
-            uint16_t pixel;
-            zl_tri_shade_lit(src, t, &poly, lq);
-            pack_color(ZL_FORMAT_RGB565, poly.flat.r, poly.flat.g, poly.flat.b, pix);
-            memcpy(&pixel, pix, 2);
             zl_tiny_draw(&tt, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride, (uint8_t *)ctx->target.depth,
-                         ctx->target.depth_stride, pixel);
+                         ctx->target.depth_stride, zl_tri_pixel565_lit(src, t, lq));
             return;
         }
     }

@@ -237,6 +237,9 @@ void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly);
 void zl_light_prepare(const zl_state *st, int32_t lq[3]);
 /* zl_tri_shade with the light prepared from s->state by zl_light_prepare. */
 void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32_t lq[3]);
+/* The lit flat colour of triangle t as a native RGB565 pixel: what
+ * zl_tri_shade_lit and pack_color give for a flat triangle. */
+uint16_t zl_tri_pixel565_lit(const zl_source *s, uint32_t t, const int32_t lq[3]);
 
 /* ---- zl_raster.c */
 /* Cull and bound fan triangle (a, b, c). Returns 1 and the row range
