@@ -264,7 +264,7 @@ static uint32_t draw_plain(const zl_context *ctx, const zl_source *src, const zl
     int32_t lq[3];
     const uint16_t *idx = src->mesh->indices + t * 3u;
     const zl_cached_vertex *cache = src->cache;
-    uint32_t n = src->mesh->triangle_count;
+    uint32_t n = src->mesh->triangle_count, flip = cull_sign < 0 ? 0xFFFFFFFFu : 0u;
     zl_light_prepare(&ctx->state, lq);
     for (; t < n; t++, idx += 3) {
         const zl_cached_vertex *c[3];
@@ -283,7 +283,9 @@ static uint32_t draw_plain(const zl_context *ctx, const zl_source *src, const zl
         }
         y0 = c[0]->y;
         area = (int64_t)(x1 - x0) * (c[2]->y - y0) - (int64_t)(x2 - x0) * (c[1]->y - y0);
-        if (area == 0 || (area < 0 ? -1 : 1) == cull_sign)
+        /* culled: the area's sign is cull_sign; for a non-zero area that is
+         * its high word's sign bit against flip's */
+        if (area == 0 || (cull_sign != 0 && (((uint32_t)((uint64_t)area >> 32) ^ flip) >> 31) == 0))
             continue;
         draw_visible(ctx, src, t, ss, c, tiny, lq);
     }

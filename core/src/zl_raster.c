@@ -742,8 +742,11 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
         first = 0;
     if (end > height)
         end = height;
-    if (first >= end || first_centre_at_or_after(min3(a->x, b->x, c->x)) >= width ||
-        first_centre_at_or_after(max3(a->x, b->x, c->x)) <= 0)
+    /* zl_tri_classify's column test is left out: a triangle entirely left or
+     * right of the target clamps every span to nothing in the row loop, so
+     * it draws the same nothing, and on-screen meshes save the test. */
+    (void)width;
+    if (first >= end)
         return 0;
     f.dx1 = v1->x - v0->x;
     f.dy1 = v1->y - v0->y;
@@ -763,8 +766,10 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
     d1 = (int32_t)(v1->z - v0->z); /* below 2^25 in magnitude */
     d2 = (int32_t)(v2->z - v0->z);
     tiny_edge_init(&tt->lng, v0->x, v0->y, v2->x, v2->y, first);
-    tiny_edge_init(&tt->up, v0->x, v0->y, v1->x, v1->y, first);
-    tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
+    if (first < mid) /* only edges with rows are read */
+        tiny_edge_init(&tt->up, v0->x, v0->y, v1->x, v1->y, first);
+    if (mid < end)
+        tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
     f.neg = cross < 0;
     f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
