@@ -68,6 +68,7 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
     zl_span_state ss;
     zl_status st;
     int32_t y;
+    int clear_depth;
     if (ctx == NULL)
         return ZL_ERR_ARG;
     st = check_target(&ctx->target);
@@ -77,12 +78,27 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
         return st;
     zl_span_state_init(&ss, &ctx->state, 1, ctx->target.color != NULL, (zl_format)ctx->target.format,
                        ctx->target.width);
-    for (y = 0; y < ctx->target.height; y++) {
-        uint16_t *z = depth_row(&ctx->target, y);
+    /* Rows without gaps between them (stride = row bytes) are one run: a
+     * single fill, without the per-row set-up. */
+    clear_depth = ctx->target.depth != NULL && ctx->state.depth_write;
+    if (clear_depth && ctx->target.depth_stride == (int32_t)ctx->target.width * 2) {
+        zl_fill16(ctx->target.depth, depth, (uint32_t)ctx->target.width * ctx->target.height);
+        clear_depth = 0;
+    }
+    if (ss.bpp == 2 && ss.keep[0] == 0 && ss.keep[1] == 0 && ctx->target.format == ZL_FORMAT_RGB565 &&
+        ctx->target.color_stride == (int32_t)ctx->target.width * 2) {
+        uint8_t pix[3] = {0, 0, 0};
+        uint16_t v;
+        pack_color(ZL_FORMAT_RGB565, color.r, color.g, color.b, pix);
+        memcpy(&v, pix, 2);
+        zl_fill16((uint16_t *)ctx->target.color, v, (uint32_t)ctx->target.width * ctx->target.height);
+        ss.bpp = 0;
+    }
+    for (y = 0; y < ctx->target.height && (ss.bpp != 0 || clear_depth); y++) {
         if (ss.bpp != 0)
             zl_fill_color_row(color_row(&ctx->target, y), &ss, color);
-        if (z != NULL && ctx->state.depth_write)
-            zl_fill16(z, depth, ctx->target.width);
+        if (clear_depth)
+            zl_fill16(depth_row(&ctx->target, y), depth, ctx->target.width);
     }
     return ZL_OK;
 }
