@@ -938,8 +938,9 @@ void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32
 
 void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly)
 {
-    int32_t lq[3];
-    zl_light_prepare(s->state, lq);
+    int32_t lq[3] = {0, 0, 0};
+    if (s->state->light_on) /* unlit: shade reads no light */
+        zl_light_prepare(s->state, lq);
     shade(s, t, &s->mesh->indices[t * 3u], poly, lq);
 }
 
