@@ -19,6 +19,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -28,14 +29,11 @@ enum { W = 96, H = 64, NT = 200, NV = 3 * NT };
 static uint32_t rng = 0xC0FFEEu;
 static uint32_t next_rand(void)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
+    return zt_rand(&rng);
 }
 static int32_t rand_range(int32_t lo, int32_t hi) /* inclusive */
 {
-    return lo + (int32_t)(next_rand() % (uint32_t)(hi - lo + 1));
+    return zt_rand_range(&rng, lo, hi);
 }
 
 static zl_fixed pos[NV * 3];

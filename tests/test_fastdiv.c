@@ -1,5 +1,6 @@
 /*
- * Fast exact division (zl_udiv64_32) against the plain 64-bit C division, on
+ * Fast exact division (zl_udiv64_32, and zl_div_inv for a divisor fixed per
+ * triangle) against the plain 64-bit C division, on
  * edge cases and on many pseudo-random operands from a fixed-seed generator
  * (the same sequence on the host and on every Cortex-M). Then the vertex
  * cache (zl_cache_vertex, zl_cache_vertices) and zl_project, whose fast
@@ -105,6 +106,58 @@ static void test_udiv_random_numerators(void)
     }
 }
 
+
+/* ------------------------------------- division by an invariant divisor */
+
+/* zl_div_inv (the reciprocal triangle setup uses for its plane equations)
+ * against the plain 64-bit C division. */
+static unsigned inv_failures;
+
+static void check_inv(uint64_t n, uint32_t d)
+{
+    zl_div_inv di;
+    zl_div_inv_init(&di, d);
+    if ((uint64_t)zl_div_inv_q(&di, n) != n / d && inv_failures++ < 5)
+        TEST_FAIL_MESSAGE("zl_div_inv_q differs from n / d");
+}
+
+static void test_div_inv_corners(void)
+{
+    static const uint32_t ds[] = {1u, 2u, 3u, 5u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u,
+                                  0x80000001u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    unsigned i;
+    for (i = 0; i < sizeof ds / sizeof ds[0]; i++) {
+        uint32_t d = ds[i];
+        uint64_t top = ((uint64_t)d << 32) - 1u; /* the largest numerator allowed */
+        check_inv(0, d);
+        check_inv(1, d);
+        check_inv(d, d);
+        check_inv((uint64_t)d - 1u, d);
+        check_inv(top, d);
+        check_inv(top - d, d);
+        check_inv(top - d + 1u, d);
+        check_inv((uint64_t)0xFFFFFFFFu * d, d);
+        check_inv((uint64_t)(d - 1u) << 32, d);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, inv_failures);
+}
+
+/* n = q d + r with random q and r, divisors of every bit length. */
+static void test_div_inv_random(void)
+{
+    unsigned k;
+    for (k = 0; k < 100000u; k++) {
+        uint32_t d = rnd_divisor();
+        uint32_t q = rnd32() >> (rnd64() % 32u);
+        uint32_t r = (uint32_t)(rnd64() % d);
+        if (k & 1u)
+            q = ~q;
+        if (k & 2u)
+            r = d - 1u - (r & 3u) % d;
+        check_inv((uint64_t)q * d + r, d);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, inv_failures);
+}
 
 /* ------------------------------------------------ the vertex cache */
 
@@ -406,7 +459,7 @@ static void test_cache_position_bound(void)
         m.m[row * 4] = clamp_lim((rnd32() & 1u) ? big : -big);
         m.m[row * 4 + 1] = clamp_lim((int32_t)(rnd32() >> (1u + rnd32() % 31u)) * ((rnd32() & 1u) ? 1 : -1));
         m.m[row * 4 + 2] = clamp_lim((rnd32() & 1u) ? big / 3 : -(big / 2));
-        m.m[row * 4 + 3] = (rnd32() & 1u) ? clamp_lim((int32_t)(rnd32() >> (rnd32() % 32u)) - (int32_t)(rnd32() >> 1))
+        m.m[row * 4 + 3] = (rnd32() & 1u) ? clamp_lim((int32_t)(rnd32() >> (1u + rnd32() % 31u)) - (int32_t)(rnd32() >> 1))
                                           : (zl_fixed)(rnd32() % 9u) - 4;
         for (k = 0; k <= 30u; k++) {
             for (j = 0; j < 8u; j++) {
@@ -734,6 +787,8 @@ int main(void)
     RUN_TEST(test_udiv_edge_cases);
     RUN_TEST(test_udiv_random_quotients);
     RUN_TEST(test_udiv_random_numerators);
+    RUN_TEST(test_div_inv_corners);
+    RUN_TEST(test_div_inv_random);
     RUN_TEST(test_cache_matches_64bit_formulas);
     RUN_TEST(test_cache_edges);
     RUN_TEST(test_cache_position_bound);

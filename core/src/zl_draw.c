@@ -189,29 +189,6 @@ static int plain_flat(const zl_context *ctx)
            sty->toon_bands == 0 && !zl_style_needs_planes(sty);
 }
 
-/* The general setup of a cached triangle zl_tri_setup_flat could not take
- * (its numbers beyond 32 bits): 0 when it has no pixels in the target. */
-static ZL_NOINLINE int setup_general(const zl_context *ctx, const zl_source *src, const uint16_t *idx, zl_poly *poly,
-                                     zl_active *tri)
-{
-    int32_t first, end;
-    unsigned k;
-    for (k = 0; k < 3; k++) {
-        const zl_cached_vertex *c = &src->cache[idx[k]];
-        poly->v[k].x = c->x;
-        poly->v[k].y = c->y;
-        poly->v[k].z = c->z;
-        poly->v[k].r = 0; /* vertex colours only matter to Gouraud shading */
-        poly->v[k].g = 0;
-        poly->v[k].b = 0;
-    }
-    poly->n = 3;
-    if (!zl_tri_classify(&poly->v[0], &poly->v[1], &poly->v[2], &ctx->state, src->width, src->height, &first, &end))
-        return 0;
-    zl_tri_setup_rows(tri, NULL, NULL, NULL, &poly->v[0], &poly->v[1], &poly->v[2], poly, &ctx->state, first, end);
-    return 1;
-}
-
 /* Triangle t of any draw through the general path: polygon (clipped when
  * it must be), cull, shade, pieces. Out of line, so its big frame (a
  * textured polygon) is not on the stack of the fast loop. */
@@ -252,12 +229,9 @@ static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source
             return;
         }
     }
-    set = zl_tri_setup_flat(&tri, c[0], c[1], c[2], src->width, src->height);
-    if (set == 0)
+    if (!zl_tri_setup_flat(&tri, c[0], c[1], c[2], &ctx->state, src->width, src->height))
         return;
-    if (set < 0 && !setup_general(ctx, src, &src->mesh->indices[t * 3u], &poly, &tri))
-        return;
-    zl_tri_shade(src, t, &poly);
+    zl_tri_shade_lit(src, t, &poly, lq);
     tri.rgb[0] = poly.flat.r;
     tri.rgb[1] = poly.flat.g;
     tri.rgb[2] = poly.flat.b;

@@ -689,29 +689,6 @@ static zl_texplanes *tex_of(const zl_frame *f, uint16_t slot)
     return f->tex ? (zl_texplanes *)(void *)(f->tex + (size_t)slot * sizeof(zl_texplanes)) : NULL;
 }
 
-/* The general setup of a cached triangle zl_tri_setup_flat could not take
- * (its numbers beyond 32 bits), as frame mode's setup_general: 0 when it
- * has no rows in the target (planning found some, so never). */
-static ZL_NOINLINE int setup_general(const zl_frame_mesh *m, const zl_source *s, const zl_cached_vertex *const *c,
-                                     zl_poly *poly, zl_active *a)
-{
-    int32_t first, end;
-    unsigned k;
-    for (k = 0; k < 3; k++) {
-        poly->v[k].x = c[k]->x;
-        poly->v[k].y = c[k]->y;
-        poly->v[k].z = c[k]->z;
-        poly->v[k].r = 0; /* vertex colours only matter to Gouraud shading */
-        poly->v[k].g = 0;
-        poly->v[k].b = 0;
-    }
-    poly->n = 3;
-    if (!zl_tri_classify(&poly->v[0], &poly->v[1], &poly->v[2], &m->state, s->width, s->height, &first, &end))
-        return 0;
-    zl_tri_setup_rows(a, NULL, NULL, NULL, &poly->v[0], &poly->v[1], &poly->v[2], poly, &m->state, first, end);
-    return 1;
-}
-
 /* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
  * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
  * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
@@ -720,12 +697,9 @@ static ZL_NOINLINE int setup_general(const zl_frame_mesh *m, const zl_source *s,
 static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t,
                                          const zl_cached_vertex *const *c, zl_active *a, zl_poly *poly)
 {
-    int set = zl_tri_setup_flat(a, c[0], c[1], c[2], s->width, s->height);
-    if (set == 0)
+    if (!zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
         return 0;
     poly->n = 0; /* flat: no vertex colours for the lighting to scale */
-    if (set < 0 && !setup_general(m, s, c, poly, a))
-        return 0;
     zl_tri_shade(s, t, poly);
     a->rgb[0] = poly->flat.r;
     a->rgb[1] = poly->flat.g;

@@ -266,14 +266,12 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
                   uint8_t *color_row, uint16_t *depth_row);
 /* Does the style need texture planes (a texture or perspective Gouraud)? */
 int zl_style_needs_planes(const zl_style *sty);
-/* Fill the span of row t->row into the given row buffers, then step t to the
- * next row. Returns 0 when the triangle has no rows left. */
 /* zl_tri_classify's bounds and zl_tri_setup_rows' record of a flat triangle
- * from three cached vertices whose culling the caller settled; colour and
- * light are the caller's. 1: set up; 0: not in the target; -1: beyond the
- * 32-bit shortcuts, use the general setup. */
+ * from three cached vertices whose culling the caller settled, under state
+ * st; colour and light are the caller's. 1: set up; 0: not in the target.
+ * In 32 bits where the numbers allow, else by the general setup. */
 int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
-                      const zl_cached_vertex *c, uint16_t width, uint16_t height);
+                      const zl_cached_vertex *c, const zl_state *st, uint16_t width, uint16_t height);
 /* A small flat triangle for frame mode, without a zl_active (zl_raster.c):
  * edges evaluated per row as ceil(n / d), n advancing by inc per row. */
 typedef struct {
@@ -305,6 +303,8 @@ void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, in
  * pixels without its per-row record updates. */
 void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
                       uint8_t *depth, int32_t depth_stride);
+/* Fill the span of row t->row into the given row buffers, then step t to the
+ * next row. Returns 0 when the triangle has no rows left. */
 int zl_tri_row(zl_active *t, zl_gouraud *g, const zl_span_state *ss, uint8_t *color_row,
                uint16_t *depth_row);
 /* Span writer settings for a state and a target format (bpp 0 = no colour). */

@@ -501,19 +501,23 @@ static int64_t attr_at(const zl_attr *a, int32_t x, int32_t ax, int64_t lo, int6
     return clamp64(a->row + (int64_t)(x - ax) * a->dx, lo, hi);
 }
 
+/* depth_start's value from the plane value v at the span start: the clamp
+ * moved after the shift (floor division is monotone, so clamping v to
+ * [zlo 16, zhi 16] and then shifting equals shifting and then clamping to
+ * [zlo / 4, zhi / 4]), so it is 32-bit work whenever v is in range. */
+static ZL_ALWAYS_INLINE uint32_t depth_start_shifted(int64_t v, uint32_t lo14, uint32_t hi14)
+{
+    int64_t w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
+    uint32_t z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
+    return (z < lo14 ? lo14 : z) + (1u << 13);
+}
+
 /* The depth stepper (Q14, rounding half added) at column x of the current
- * row: the Q20 plane clamped to the vertex range. Once per row, so the
- * common case (a gradient within 32 bits) is one 32x32->64 multiply. */
+ * row: the Q20 plane clamped to the vertex range (zlo, zhi are Q16, so the
+ * range after the shift is zlo / 4 .. zhi / 4). */
 static ZL_ALWAYS_INLINE uint32_t depth_start(const zl_active *t, int64_t zrow, int32_t x)
 {
-    const int64_t lo = (int64_t)t->zlo << (ZL_ATTR_FRAC - 16), hi = (int64_t)t->zhi << (ZL_ATTR_FRAC - 16);
-    int64_t v;
-    if (t->z.dx >= INT32_MIN && t->z.dx <= INT32_MAX)
-        v = zrow + (int64_t)(int32_t)t->z.dx * (x - t->ax);
-    else
-        v = zrow + (int64_t)(x - t->ax) * t->z.dx;
-    v = v < lo ? lo : (v > hi ? hi : v);
-    return (uint32_t)((uint64_t)v >> (ZL_ATTR_FRAC - 14)) + (1u << 13);
+    return depth_start_shifted(zrow + (int64_t)(x - t->ax) * t->z.dx, t->zlo >> 2, t->zhi >> 2);
 }
 
 static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_state *ss, uint8_t *crow,
@@ -553,49 +557,102 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
     }
 }
 
-/*
- * Set up a flat triangle from three cached vertices (int16 window x, y):
- * zl_tri_classify's row and column bounds and zl_tri_setup_rows' record, in
- * 32-bit arithmetic, for a triangle whose culling the caller has settled
- * (non-zero area, the visible side). Colour and light are the caller's.
- * Returns 1 when set up, 0 when no row or column of it is in the target,
- * and -1 when its numbers leave the 32-bit shortcuts (|cross| >= 2^32,
- * depth differences beyond 2^31, a quotient beyond 32 bits): then the
- * general setup must do it.
- */
-int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
-                      const zl_cached_vertex *c, uint16_t width, uint16_t height)
+/* Sort three cached vertices by y with sort3's comparisons (so the same
+ * order on ties), and find their rows [first, end) in a target of `height`
+ * rows and the row `mid` where the lower short edge takes over. 0 when no
+ * row is in the target. */
+static ZL_ALWAYS_INLINE int cached_rows(const zl_cached_vertex **v, uint16_t height, int32_t *first, int32_t *mid,
+                                        int32_t *end)
 {
-    const zl_cached_vertex *v0 = a, *v1 = b, *v2 = c, *tmp;
-    int32_t first, end, mid, ax, ay, d1, d2;
+    const zl_cached_vertex *t;
+    int32_t m;
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+    if (v[2]->y < v[1]->y) {
+        t = v[1];
+        v[1] = v[2];
+        v[2] = t;
+    }
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+    *first = first_centre_at_or_after(v[0]->y);
+    *end = first_centre_at_or_after(v[2]->y);
+    if (*first < 0)
+        *first = 0;
+    if (*end > height)
+        *end = height;
+    m = first_centre_at_or_after(v[1]->y);
+    *mid = m < *first ? *first : (m > *end ? *end : m);
+    return *first < *end;
+}
+
+/* The rest of a small frame, once its edge vectors are in: the divisor
+ * |cross| (below 2^32) and its reciprocal where round_div_frame uses one,
+ * and the anchor pixel of the sorted v0. Returns the anchor column. */
+static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cached_vertex *v0, int32_t first,
+                                                   int64_t cross)
+{
+    int32_t ax = zl_floor_shift32(v0->x, ZL_SUB_BITS), ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
+    f->neg = cross < 0;
+    f->c32 = (uint32_t)(cross < 0 ? -cross : cross);
+    f->ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
+    f->oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
+    f->rows = first - ay;
+    if (f->c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
+        zl_div_inv_init(&f->inv, f->c32);
+    return ax;
+}
+
+/* zl_tri_setup_flat's triangle by the general setup (zl_tri_classify and
+ * zl_tri_setup_rows on window vertices), for numbers beyond 32 bits. Out of
+ * line: its polygon is not on the stack of the common case. */
+static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *const *c, const zl_state *st,
+                                          uint16_t width, uint16_t height)
+{
+    zl_poly poly;
+    int32_t first, end;
+    unsigned k;
+    memset(&poly, 0, sizeof poly); /* no vertex colours, no flat colour: the caller's */
+    for (k = 0; k < 3; k++) {
+        poly.v[k].x = c[k]->x;
+        poly.v[k].y = c[k]->y;
+        poly.v[k].z = c[k]->z;
+    }
+    poly.n = 3;
+    if (!zl_tri_classify(&poly.v[0], &poly.v[1], &poly.v[2], st, width, height, &first, &end))
+        return 0;
+    zl_tri_setup_rows(t, NULL, NULL, NULL, &poly.v[0], &poly.v[1], &poly.v[2], &poly, st, first, end);
+    return 1;
+}
+
+/*
+ * The 32-bit setup of zl_tri_setup_flat: 1 set up, 0 no row or column in
+ * the target, -1 when its numbers leave the 32-bit shortcuts (|cross| >=
+ * 2^32, depth differences beyond 2^31, a quotient beyond 32 bits).
+ */
+static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                         const zl_cached_vertex *c, uint16_t width, uint16_t height)
+{
+    const zl_cached_vertex *v[3], *v0, *v1, *v2;
+    int32_t first, end, mid, ax, d1, d2;
     int64_t cross;
     small_frame f;
     zl_edge upper;
-    /* the same comparisons as sort3, so the same order on ties */
-    if (v1->y < v0->y) {
-        tmp = v0;
-        v0 = v1;
-        v1 = tmp;
-    }
-    if (v2->y < v1->y) {
-        tmp = v1;
-        v1 = v2;
-        v2 = tmp;
-    }
-    if (v1->y < v0->y) {
-        tmp = v0;
-        v0 = v1;
-        v1 = tmp;
-    }
-    first = first_centre_at_or_after(v0->y);
-    end = first_centre_at_or_after(v2->y);
-    if (first < 0)
-        first = 0;
-    if (end > height)
-        end = height;
-    if (first >= end || first_centre_at_or_after(min3(a->x, b->x, c->x)) >= width ||
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    if (!cached_rows(v, height, &first, &mid, &end) || first_centre_at_or_after(min3(a->x, b->x, c->x)) >= width ||
         first_centre_at_or_after(max3(a->x, b->x, c->x)) <= 0)
         return 0;
+    v0 = v[0];
+    v1 = v[1];
+    v2 = v[2];
     f.dx1 = v1->x - v0->x;
     f.dy1 = v1->y - v0->y;
     f.dx2 = v2->x - v0->x;
@@ -604,19 +661,9 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
     if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
         !depth_diff32(v2->z, v0->z, &d2))
         return -1;
-    f.neg = cross < 0;
-    f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
-    ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
-    ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
-    f.ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
-    f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
-    f.rows = first - ay;
-    if (f.c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
-        zl_div_inv_init(&f.inv, f.c32);
+    ax = small_frame_anchor(&f, v0, first, cross);
     if (!plane_small(&t->z, &f, v0->z, d1, d2))
         return -1;
-    mid = first_centre_at_or_after(v1->y);
-    mid = mid < first ? first : (mid > end ? end : mid);
     t->kind = ZL_KIND_TRI;
     t->row = (int16_t)first;
     t->mid = (int16_t)mid;
@@ -642,16 +689,21 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
     return 1;
 }
 
-/* depth_start's value from the plane value v at the span start: the clamp
- * moved after the shift (floor division is monotone, so clamping v to
- * [zlo 16, zhi 16] and then shifting equals shifting and then clamping to
- * [zlo / 4, zhi / 4]), so it is 32-bit work whenever v is in range. */
-static ZL_ALWAYS_INLINE uint32_t depth_start_shifted(int64_t v, uint32_t lo14, uint32_t hi14)
+int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                      const zl_cached_vertex *c, const zl_state *st, uint16_t width, uint16_t height)
 {
-    int64_t w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
-    uint32_t z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
-    return (z < lo14 ? lo14 : z) + (1u << 13);
+    int set = setup_flat_32(t, a, b, c, width, height);
+    if (set >= 0)
+        return set;
+    {
+        const zl_cached_vertex *v[3];
+        v[0] = a;
+        v[1] = b;
+        v[2] = c;
+        return setup_flat_general(t, v, st, width, height);
+    }
 }
+
 
 /* ---------------------------------------- small flat triangles, frame mode */
 
@@ -715,45 +767,27 @@ static void tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t zlo, uint32_t zhi
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height)
 {
-    const zl_cached_vertex *v0 = a, *v1 = b, *v2 = c, *tmp;
-    int32_t first, end, mid, ax, ay, d1, d2, cross;
+    const zl_cached_vertex *v[3], *v0, *v1, *v2;
+    int32_t first, end, mid, ax, d1, d2, cross;
     uint32_t zlo, zhi;
     small_frame f;
     zl_attr z;
-    /* the same comparisons as sort3, so the same order on ties */
-    if (v1->y < v0->y) {
-        tmp = v0;
-        v0 = v1;
-        v1 = tmp;
-    }
-    if (v2->y < v1->y) {
-        tmp = v1;
-        v1 = v2;
-        v2 = tmp;
-    }
-    if (v1->y < v0->y) {
-        tmp = v0;
-        v0 = v1;
-        v1 = tmp;
-    }
-    first = first_centre_at_or_after(v0->y);
-    end = first_centre_at_or_after(v2->y);
-    if (first < 0)
-        first = 0;
-    if (end > height)
-        end = height;
     /* zl_tri_classify's column test is left out: a triangle entirely left or
      * right of the target clamps every span to nothing in the row loop, so
      * it draws the same nothing, and on-screen meshes save the test. */
     (void)width;
-    if (first >= end)
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    if (!cached_rows(v, height, &first, &mid, &end))
         return 0;
+    v0 = v[0];
+    v1 = v[1];
+    v2 = v[2];
     f.dx1 = v1->x - v0->x;
     f.dy1 = v1->y - v0->y;
     f.dx2 = v2->x - v0->x;
     f.dy2 = v2->y - v0->y;
-    mid = first_centre_at_or_after(v1->y);
-    mid = mid < first ? first : (mid > end ? end : mid);
     /* Every |x| below 2^13 and a height below 2^13 subpixels: then each edge's
      * N = (xt - 8) dy + (16 j + 8 - yt) dx, on its rows, stays below
      * 2^13 (2^13 + 8 + 2^14) < 2^28 in magnitude, the cross product below
@@ -771,15 +805,7 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
     if (mid < end)
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
-    f.neg = cross < 0;
-    f.c32 = (uint32_t)(cross < 0 ? -cross : cross);
-    ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
-    ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
-    f.ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
-    f.oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
-    f.rows = first - ay;
-    if (f.c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
-        zl_div_inv_init(&f.inv, f.c32);
+    ax = small_frame_anchor(&f, v0, first, cross);
     if (!plane_small(&z, &f, v0->z, d1, d2))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
