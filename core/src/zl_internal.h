@@ -257,7 +257,8 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
                     const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st,
                     uint16_t width, uint16_t height);
 /* zl_tri_setup_ex for a triangle zl_tri_classify accepted with rows
- * [first, end): the same record, without classifying it again. */
+ * [first, end): the same record, without classifying it again. poly may be
+ * NULL without texture planes: then the caller sets rgb and light. */
 void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
                        const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st, int32_t first,
                        int32_t end);

@@ -481,16 +481,18 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
         if (v[k]->z > t->zhi)
             t->zhi = v[k]->z;
     }
-    t->rgb[0] = poly->flat.r;
-    t->rgb[1] = poly->flat.g;
-    t->rgb[2] = poly->flat.b;
+    if (poly != NULL) { /* NULL: the caller sets the colour and light itself */
+        t->rgb[0] = poly->flat.r;
+        t->rgb[1] = poly->flat.g;
+        t->rgb[2] = poly->flat.b;
+        t->light = poly->light;
+    }
     if (g != NULL && st->shading == ZL_SHADE_GOURAUD) {
         /* Colours are Q8; the plane takes Q16. */
         plane_setup(&g->c[0], &pf, (int64_t)v[0]->r * 256, (int64_t)v[1]->r * 256, (int64_t)v[2]->r * 256);
         plane_setup(&g->c[1], &pf, (int64_t)v[0]->g * 256, (int64_t)v[1]->g * 256, (int64_t)v[2]->g * 256);
         plane_setup(&g->c[2], &pf, (int64_t)v[0]->b * 256, (int64_t)v[1]->b * 256, (int64_t)v[2]->b * 256);
     }
-    t->light = poly->light;
     if (tp != NULL && zl_style_needs_planes(sty))
         tex_setup(tp, g, sty, v, poly, &pf, st);
 }
@@ -611,23 +613,24 @@ static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cach
 
 /* zl_tri_setup_flat's triangle by the general setup (zl_tri_classify and
  * zl_tri_setup_rows on window vertices), for numbers beyond 32 bits. Out of
- * line: its polygon is not on the stack of the common case. */
+ * line, so the common case does not carry its frame. */
 static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *const *c, const zl_state *st,
                                           uint16_t width, uint16_t height)
 {
-    zl_poly poly;
+    zl_wvert w[3];
     int32_t first, end;
     unsigned k;
-    memset(&poly, 0, sizeof poly); /* no vertex colours, no flat colour: the caller's */
     for (k = 0; k < 3; k++) {
-        poly.v[k].x = c[k]->x;
-        poly.v[k].y = c[k]->y;
-        poly.v[k].z = c[k]->z;
+        w[k].x = c[k]->x;
+        w[k].y = c[k]->y;
+        w[k].z = c[k]->z;
+        w[k].r = 0; /* vertex colours only matter to Gouraud shading */
+        w[k].g = 0;
+        w[k].b = 0;
     }
-    poly.n = 3;
-    if (!zl_tri_classify(&poly.v[0], &poly.v[1], &poly.v[2], st, width, height, &first, &end))
+    if (!zl_tri_classify(&w[0], &w[1], &w[2], st, width, height, &first, &end))
         return 0;
-    zl_tri_setup_rows(t, NULL, NULL, NULL, &poly.v[0], &poly.v[1], &poly.v[2], &poly, st, first, end);
+    zl_tri_setup_rows(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, st, first, end);
     return 1;
 }
 
