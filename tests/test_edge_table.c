@@ -17,7 +17,7 @@
  * x - rem/den (in pixels, relative to the centre offset), so each expected
  * x is checked exactly as a rational, and z at the crossing from the plane.
  */
-#include "../core/src/zl_internal.h"
+#include "../core/src/1_base/zl_internal.h"
 #include "unity.h"
 
 void setUp(void) {}

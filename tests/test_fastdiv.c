@@ -8,7 +8,7 @@
  */
 #include <string.h>
 
-#include "../core/src/zl_internal.h"
+#include "../core/src/1_base/zl_internal.h"
 #include "unity.h"
 
 void setUp(void) {}

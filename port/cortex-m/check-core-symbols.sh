@@ -1,5 +1,5 @@
 #!/bin/sh
-# core_no_float_symbols: compile every core/src/*.c for a Cortex-M0 (no FPU,
+# core_no_float_symbols: compile every core/src/*/*.c for a Cortex-M0 (no FPU,
 # soft float: any float or double arithmetic becomes a libgcc call) and fail
 # if an object references
 #   - a floating-point helper: __aeabi_f*, __aeabi_d*, __aeabi_c[fd]*cmp*,
@@ -29,7 +29,7 @@ command -v "$gcc" >/dev/null 2>&1 ||
 command -v "$nm" >/dev/null 2>&1 ||
     fail "'$nm' not found (binutils-arm-none-eabi) or set ARM_NM"
 
-set -- "$src"/core/src/*.c
+set -- "$src"/core/src/*/*.c
 [ -f "$1" ] || fail "no C sources in $src/core/src"
 
 tmp=$(mktemp -d) || fail "mktemp"
@@ -44,7 +44,7 @@ for c in "$@"; do
     o=$tmp/$(basename "$c" .c).o
     # shellcheck disable=SC2086
     if ! "$gcc" -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -O2 -std=c99 \
-        -I"$src/core/include" -I"$src/core/src" ${CORE_CFLAGS:-} -c "$c" -o "$o"; then
+        -I"$src/core/include" ${CORE_CFLAGS:-} -c "$c" -o "$o"; then
         echo "core_no_float_symbols: FAIL: $c does not compile for Cortex-M0" >&2
         status=1
         continue

@@ -22,8 +22,8 @@ cppcheck=${CPPCHECK:-cppcheck}
 tidy=${CLANG_TIDY:-clang-tidy}
 gcc=${GCC:-gcc}
 build=${LINT_BUILD:-$top/build/lint}
-inc="-Icore/include -Icore/src -Iport/host"
-files=$(ls core/src/*.c port/host/*.c)
+inc="-Icore/include -Iport/host"
+files=$(ls core/src/*/*.c port/host/*.c)
 status=0
 
 # The compile commands of the real build (include paths, defines, the

@@ -19,7 +19,7 @@ top=$(cd "$(dirname "$0")/../.." && pwd)
 cc=${ARM_GCC:-arm-none-eabi-gcc}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for f in "$top"/core/src/*.c; do
+for f in "$top"/core/src/*/*.c; do
     "$cc" -mcpu="$cpu" -mthumb -mfloat-abi=soft -O2 -std=c99 -I"$top/core/include" \
         -fcallgraph-info=su -c "$f" -o "$work/$(basename "$f" .c).o" -dumpdir "$work/"
 done

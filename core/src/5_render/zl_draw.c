@@ -1,8 +1,8 @@
 /* Immediate (frame) mode: draw meshes straight into a full target. */
 #include <string.h>
 
-#include "zl_internal.h"
-#include "zl_span.h"
+#include "../1_base/zl_internal.h"
+#include "../3_raster/zl_span.h"
 
 /* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
 typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
@@ -101,25 +101,6 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
             zl_fill16(depth_row(&ctx->target, y), depth, ctx->target.width);
     }
     return ZL_OK;
-}
-
-zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
-{
-    uint32_t i, n;
-    int32_t bad = 0;
-    (void)pixel_space;
-    if (m == NULL)
-        return ZL_ERR_ARG;
-    if ((m->vertex_count > 0 && m->positions == NULL) || (m->triangle_count > 0 && m->indices == NULL))
-        return ZL_ERR_ARG;
-    /* vertex_count - 1 - index is negative exactly for an index out of
-     * range: OR-ing them tests a whole mesh with one branch at the end. */
-    n = (uint32_t)m->triangle_count * 3u;
-    for (i = 0; i < n; i += 3) {
-        const int32_t top = (int32_t)m->vertex_count - 1;
-        bad |= (top - m->indices[i]) | (top - m->indices[i + 1]) | (top - m->indices[i + 2]);
-    }
-    return bad < 0 ? ZL_ERR_RANGE : ZL_OK;
 }
 
 /* Draw one set-up triangle, line or point into the target, all its rows. */
@@ -360,32 +341,6 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     for (t = 0; t < mesh->triangle_count; t++)
         draw_general(ctx, &src, t, &ss, planes);
     return ZL_OK;
-}
-
-zl_status zl_check_lines(const zl_lines *l)
-{
-    uint32_t i;
-    if (l == NULL)
-        return ZL_ERR_ARG;
-    if (l->prim > ZL_PRIM_POINTS)
-        return ZL_ERR_ARG;
-    if (l->count > 0 && l->positions == NULL)
-        return ZL_ERR_ARG;
-    for (i = 0; i < l->count; i++)
-        if ((l->indices != NULL ? l->indices[i] : i) >= l->vertex_count)
-            return ZL_ERR_RANGE;
-    return ZL_OK;
-}
-
-/* A mesh view of a zl_lines, for the vertex transform. */
-void zl_lines_mesh(const zl_lines *l, zl_mesh *m)
-{
-    m->positions = l->positions;
-    m->indices = NULL;
-    m->vertex_colors = NULL;
-    m->face_colors = NULL;
-    m->vertex_count = 0; /* nothing to cache: lines are transformed per segment */
-    m->triangle_count = (uint16_t)zl_lines_primitives(l);
 }
 
 zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp, const zl_outline *outline)

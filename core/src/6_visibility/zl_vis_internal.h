@@ -6,7 +6,7 @@
 #ifndef ZLINE_VIS_INTERNAL_H
 #define ZLINE_VIS_INTERNAL_H
 
-#include "zl_internal.h"
+#include "../1_base/zl_internal.h"
 #include "zline/zl_visibility.h"
 
 struct zl_vis_mesh {

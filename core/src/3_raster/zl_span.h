@@ -8,7 +8,7 @@
 
 #include <string.h>
 
-#include "zl_internal.h"
+#include "../1_base/zl_internal.h"
 
 /* Memory bytes of colour c in a format (2 or 3 of them). */
 static inline void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, uint8_t out[3])

@@ -300,17 +300,6 @@ zl_status zl_vis_plan(zl_vis *v)
     return ZL_OK;
 }
 
-int zl_vis_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user)
-{
-    if (v == NULL || fn == NULL)
-        return ZL_ERR_ARG;
-    if (v->cfg.algorithm == ZL_VIS_AET)
-        return zl_aet_render_rows(v, clear, fn, user);
-    if (v->cfg.algorithm == ZL_VIS_RAYCAST)
-        return zl_raycast_render_rows(v, clear, fn, user);
-    return ZL_ERR_ARG;
-}
-
 /* ---------------------------------------------------------------- helpers */
 
 void zl_vis_pack(zl_format f, const uint8_t *rgb, uint8_t out[3])

@@ -194,6 +194,17 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #define ZL_NOINLINE
 #endif
 
+/* A static helper defined in a stage's internal header with no inline hint,
+ * so each file that uses it gets the same inlining decision as when the
+ * helper was in that file (the hint changes GCC's choice, and with it the
+ * stack bound and the measured instruction counts); files that do not use
+ * it get no warning. */
+#if defined(__GNUC__)
+#define ZL_SHARED_STATIC static __attribute__((unused))
+#else
+#define ZL_SHARED_STATIC static
+#endif
+
 /* Force a tiny helper of the span loops inline even at -Os, where GCC stops
  * inlining a function once it has many callers (and each span loop would
  * then make a call per pixel). */

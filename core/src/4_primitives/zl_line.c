@@ -16,7 +16,7 @@
  * row, after skipping (by one division at setup) what lies outside the
  * target, so rows come top to bottom and cost only their own pixels.
  */
-#include "zl_internal.h"
+#include "../1_base/zl_internal.h"
 
 void zl_style_default(zl_style *s)
 {
@@ -456,4 +456,15 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
             return zl_point_setup(t, &p, flat, sty->point_size, off, s->width, s->height);
         }
     }
+}
+
+/* A mesh view of a zl_lines, for the vertex transform. */
+void zl_lines_mesh(const zl_lines *l, zl_mesh *m)
+{
+    m->positions = l->positions;
+    m->indices = NULL;
+    m->vertex_colors = NULL;
+    m->face_colors = NULL;
+    m->vertex_count = 0; /* nothing to cache: lines are transformed per segment */
+    m->triangle_count = (uint16_t)zl_lines_primitives(l);
 }

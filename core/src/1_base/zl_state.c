@@ -1,5 +1,6 @@
-/* Render state defaults and validation; pixel format sizes. */
-#include "zline/zline.h"
+/* Stage 1, base: render state defaults and validation, pixel format sizes, and
+ * the argument checks of meshes and line lists that every later stage shares. */
+#include "zl_internal.h"
 
 void zl_state_default(zl_state *s)
 {
@@ -47,4 +48,38 @@ unsigned zl_format_bytes(zl_format f)
         return 3;
     }
     return 0;
+}
+
+zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
+{
+    uint32_t i, n;
+    int32_t bad = 0;
+    (void)pixel_space;
+    if (m == NULL)
+        return ZL_ERR_ARG;
+    if ((m->vertex_count > 0 && m->positions == NULL) || (m->triangle_count > 0 && m->indices == NULL))
+        return ZL_ERR_ARG;
+    /* vertex_count - 1 - index is negative exactly for an index out of
+     * range: OR-ing them tests a whole mesh with one branch at the end. */
+    n = (uint32_t)m->triangle_count * 3u;
+    for (i = 0; i < n; i += 3) {
+        const int32_t top = (int32_t)m->vertex_count - 1;
+        bad |= (top - m->indices[i]) | (top - m->indices[i + 1]) | (top - m->indices[i + 2]);
+    }
+    return bad < 0 ? ZL_ERR_RANGE : ZL_OK;
+}
+
+zl_status zl_check_lines(const zl_lines *l)
+{
+    uint32_t i;
+    if (l == NULL)
+        return ZL_ERR_ARG;
+    if (l->prim > ZL_PRIM_POINTS)
+        return ZL_ERR_ARG;
+    if (l->count > 0 && l->positions == NULL)
+        return ZL_ERR_ARG;
+    for (i = 0; i < l->count; i++)
+        if ((l->indices != NULL ? l->indices[i] : i) >= l->vertex_count)
+            return ZL_ERR_RANGE;
+    return ZL_OK;
 }

@@ -1,5 +1,5 @@
 /* 4x4 matrices in Q16.16: building, multiplying and applying them. */
-#include "zl_internal.h"
+#include "../1_base/zl_internal.h"
 
 #define M(r, c) m[(r) * 4 + (c)]
 #define ZL_COORD_LIMIT ((int32_t)1 << 30) /* +-16384.0: keeps 4 products inside int64 */

@@ -9,7 +9,7 @@
  * window-space winding. So a silhouette is decided for every edge, seen or
  * not; the line itself is clipped like any segment.
  */
-#include "zl_internal.h"
+#include "../1_base/zl_internal.h"
 
 /* ---------------------------------------------------------- edge list */
 

@@ -1,0 +1,69 @@
+/*
+ * Stage 2, geometry: what the vertex, lighting and clipping files share.
+ * Internal to core/src/2_geometry; later stages use zl_internal.h only.
+ */
+#ifndef ZL_GEOMETRY_H
+#define ZL_GEOMETRY_H
+
+#include "../1_base/zl_internal.h"
+
+/* The clip planes, in the order a triangle is clipped against them. */
+enum {
+    PLANE_W = 0,      /* w >= 1 raw: keeps every later division defined */
+    PLANE_NEAR = 1,   /* z >= 0 */
+    PLANE_FAR = 2,    /* z <= w */
+    PLANE_LEFT = 3,   /* window x >= -ZL_GUARD_PX */
+    PLANE_RIGHT = 4,  /* window x <= width + ZL_GUARD_PX */
+    PLANE_TOP = 5,    /* window y >= -ZL_GUARD_PX */
+    PLANE_BOTTOM = 6, /* window y <= height + ZL_GUARD_PX */
+    PLANE_COUNT = 7
+};
+
+#define COORD_LIMIT ((uint32_t)1 << 30) /* zl_matrix.c's limit: +-16384.0 */
+
+/* Vertex colour channel k in Q8 (0 without vertex colours). */
+ZL_SHARED_STATIC int32_t color_q8(const zl_mesh *m, uint16_t idx, int k)
+{
+    return m->vertex_colors ? (int32_t)m->vertex_colors[idx * 3u + (unsigned)k] * 256 : 0;
+}
+
+/* |v| <= 2^30, the coordinate and matrix entry limit, in one compare. */
+ZL_SHARED_STATIC int in_limit(zl_fixed v)
+{
+    return (uint32_t)v + COORD_LIMIT <= 2u * COORD_LIMIT;
+}
+
+ZL_SHARED_STATIC uint32_t abs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+/*
+ * Signed distance of v to a plane, positive inside, in 64 bits. The x/y
+ * planes come from window x = (x/w + 1) * W/2 >= -G, multiplied through by
+ * 2w > 0: W x + (W + 2G) w >= 0; in pixel space window x is x itself.
+ */
+ZL_SHARED_STATIC int64_t plane_distance(const zl_source *s, unsigned plane, const zl_cvert *v)
+{
+    const int64_t g = ZL_GUARD_PX;
+    const int64_t w = v->w, wd = s->width, ht = s->height;
+    int pixel = s->mvp == NULL;
+    switch (plane) {
+    case PLANE_W:
+        return w - 1;
+    case PLANE_NEAR:
+        return v->z;
+    case PLANE_FAR:
+        return w - v->z;
+    case PLANE_LEFT:
+        return pixel ? v->x + g * w : wd * v->x + (wd + 2 * g) * w;
+    case PLANE_RIGHT:
+        return pixel ? (wd + g) * w - v->x : -wd * v->x + (wd + 2 * g) * w;
+    case PLANE_TOP:
+        return pixel ? v->y + g * w : -ht * v->y + (ht + 2 * g) * w;
+    default:
+        return pixel ? (ht + g) * w - v->y : ht * v->y + (ht + 2 * g) * w;
+    }
+}
+
+#endif /* ZL_GEOMETRY_H */

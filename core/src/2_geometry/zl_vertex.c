@@ -1,0 +1,386 @@
+/*
+ * Stage 2, geometry: vertices. Fetch and transform a vertex to clip space
+ * (Q16.16, 64-bit accumulation), its outcode against the seven clip planes,
+ * projection and snapping to window coordinates, and the vertex cache (each
+ * vertex transformed, tested and projected once per draw or frame).
+ */
+#include <stddef.h>
+#include <string.h>
+
+#include "zl_geometry.h"
+
+int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
+{
+    const zl_fixed *p = &s->mesh->positions[idx * 3u];
+    zl_vec3 v;
+    v.x = p[0];
+    v.y = p[1];
+    v.z = p[2];
+    if (s->mvp != NULL) {
+        zl_vec4 c;
+        if (zl_transform_point(s->mvp, v, &c) != ZL_OK)
+            return 0;
+        out->x = c.x;
+        out->y = c.y;
+        out->z = c.z;
+        out->w = c.w;
+    } else {
+        out->x = v.x;
+        out->y = v.y;
+        out->z = v.z;
+        out->w = ZL_FX_ONE;
+    }
+    out->r = color_q8(s->mesh, idx, 0);
+    out->g = color_q8(s->mesh, idx, 1);
+    out->b = color_q8(s->mesh, idx, 2);
+    return 1;
+}
+
+unsigned zl_outcode(const zl_source *s, const zl_cvert *v)
+{
+    unsigned code = 0, p;
+    for (p = 0; p < PLANE_COUNT; p++)
+        if (plane_distance(s, p, v) < 0)
+            code |= 1u << p;
+    return code;
+}
+
+static uint16_t color_out(int32_t c)
+{
+    if (c < 0)
+        return 0;
+    return (uint16_t)(c > 255 * 256 ? 255 * 256 : c);
+}
+
+/* floor(n / d) for n >= 0 whose quotient fits 32 bits: one 32-bit division
+ * when n does (most vertices), else the 64/32 one, never the libgcc call. */
+static inline uint32_t udiv_small(uint64_t n, uint32_t d)
+{
+    if ((n >> 32) == 0)
+        return (uint32_t)n / d;
+    return zl_udiv64_32(n, d, NULL);
+}
+
+/* zl_round_div64(n, w) for w >= 1, any n: it equals floor((n + floor(w/2)) / w),
+ * which the 64/32 division gives when that is non-negative and fits. */
+static int32_t round_div_w(int64_t n, int32_t w)
+{
+    int64_t m = n + (w >> 1);
+    if (m >= 0 && (uint64_t)m < ((uint64_t)(uint32_t)w << 32))
+        return (int32_t)udiv_small((uint64_t)m, (uint32_t)w);
+    return (int32_t)zl_floor_div64(m, w);
+}
+
+/*
+ * round(z / w * 65535 * 65536) for 0 <= z <= w, w >= 1: the 64/32 division
+ * of n = z * (2^32 - 2^16) + w/2 < w * 2^32 (so the quotient fits 32 bits).
+ * For w below 2^20 (clip w below 16.0, most scenes) it is schoolbook long
+ * division in digits of 12, 12 and 8 bits: every partial remainder is below
+ * w, so remainder * 2^12 plus the next digit fits 32 bits and each digit is
+ * one 32-bit division, no correction step. Where division is a library call
+ * (Cortex-M0) the general 64/32 division is used throughout.
+ */
+static ZL_ALWAYS_INLINE uint32_t depth_q16(uint32_t z, uint32_t w)
+{
+    uint64_t n = ((uint64_t)z << 32) - ((uint64_t)z << 16) + (w >> 1); /* shifts: no multiply */
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+    if (w < (1u << 20)) {
+        uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r, q2, q1, q0;
+        r = (hi << 12) | (lo >> 20); /* hi < w */
+        q2 = r / w;
+        r -= q2 * w;
+        r = (r << 12) | ((lo >> 8) & 0xFFFu);
+        q1 = r / w;
+        r -= q1 * w;
+        r = (r << 8) | (lo & 0xFFu);
+        q0 = r / w;
+        return (q2 << 20) | (q1 << 8) | q0;
+    }
+#endif
+    return udiv_small(n, w);
+}
+
+void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
+{
+    int64_t z = v->z < 0 ? 0 : v->z;
+    if (s->mvp != NULL) {
+        /* Rounded window position in subpixels: (x/w + 1) * W/2 * 2^SUB, and
+         * (1 - y/w) * H/2 * 2^SUB with row 0 at the top. */
+        int32_t w = v->w < 1 ? 1 : v->w;
+        out->x = round_div_w(((int64_t)v->x + w) * s->width * (ZL_SUB_ONE / 2), w);
+        out->y = round_div_w(((int64_t)w - v->y) * s->height * (ZL_SUB_ONE / 2), w);
+        if (z > w)
+            z = w;
+        out->z = depth_q16((uint32_t)z, (uint32_t)w);
+    } else {
+        /* Pixel space: x, y are Q16.16 pixels, z is depth 0..1 in Q16.16. */
+        out->x = (int32_t)zl_floor_shift64((int64_t)v->x + (1 << (15 - ZL_SUB_BITS)), 16 - ZL_SUB_BITS);
+        out->y = (int32_t)zl_floor_shift64((int64_t)v->y + (1 << (15 - ZL_SUB_BITS)), 16 - ZL_SUB_BITS);
+        if (z > ZL_FX_ONE)
+            z = ZL_FX_ONE;
+        out->z = (uint32_t)(z * 65535);
+    }
+    out->r = color_out(v->r);
+    out->g = color_out(v->g);
+    out->b = color_out(v->b);
+}
+
+/* zl_cache_vertex by its definition: transform, 7 planes, projection. */
+static zl_cached_vertex cache_vertex_generic(const zl_source *s, uint16_t idx)
+{
+    zl_cached_vertex c;
+    zl_cvert v;
+    zl_wvert w;
+    c.x = ZL_CACHE_INVALID;
+    c.y = 0;
+    c.z = 0;
+    if (!zl_vertex_clip(s, idx, &v))
+        return c;
+    c.x = ZL_CACHE_COMPLEX;
+    if (zl_outcode(s, &v) != 0)
+        return c;
+    zl_project(s, &v, &w);
+    /* INT16_MIN and INT16_MIN + 1 are the markers, so they never hold data. */
+    if (w.x <= ZL_CACHE_INVALID || w.x > INT16_MAX || w.y < INT16_MIN || w.y > INT16_MAX)
+        return c;
+    c.x = (int16_t)w.x;
+    c.y = (int16_t)w.y;
+    c.z = w.z;
+    return c;
+}
+
+/*
+ * The fast path of the vertex cache, with a matrix: the same numbers as
+ * cache_vertex_generic, with the per-draw work hoisted out of the vertex loop.
+ */
+typedef struct {
+    zl_fixed m[16];      /* the matrix (a copy: no reloads after each store); every entry within +-COORD_LIMIT */
+    int64_t bias[4];     /* translation column * 2^16 + 2^15: rounding folded in */
+    uint32_t wd, ht;     /* viewport */
+    uint32_t gx, gy;     /* W + 2G, H + 2G: the guard-band planes */
+    uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
+    uint32_t pfast;      /* P: positions within [-P, P) need no range checks */
+    uint32_t qx, qy;     /* window quotients below these are inside and in range */
+} vx_setup;
+
+/* min(a, b) where b may be negative (then 0). */
+static uint32_t limit_below(uint32_t a, int32_t b)
+{
+    return b <= 0 ? 0u : ((uint32_t)b < a ? (uint32_t)b : a);
+}
+
+/*
+ * The largest power of two P <= 2^30 (or 0) such that no row of the
+ * transform can leave Q16.16 for a position with every |coordinate| <= P:
+ * with S = |m0| + |m1| + |m2| (below 2^32), |acc| <= S P + |bias| < 2^47.
+ */
+static uint32_t fast_bound(const vx_setup *vs)
+{
+    const int64_t lim = (int64_t)1 << 47;
+    uint32_t p = COORD_LIMIT;
+    int r;
+    for (r = 0; r < 4; r++) {
+        const zl_fixed *m = &vs->m[r * 4];
+        uint64_t sum = (uint64_t)abs32(m[0]) + abs32(m[1]) + abs32(m[2]);
+        int64_t b = vs->bias[r] < 0 ? -vs->bias[r] : vs->bias[r]; /* below 2^47 */
+        while (p != 0 && (int64_t)(sum * p) >= lim - b)
+            p >>= 1;
+    }
+    return p;
+}
+
+/* 0 when a matrix entry is out of range: then every vertex is invalid. */
+static int vx_prepare(const zl_source *s, vx_setup *vs)
+{
+    const zl_fixed *m = s->mvp->m;
+    int k;
+    for (k = 0; k < 16; k++)
+        if (!in_limit(m[k]))
+            return 0;
+    for (k = 0; k < 16; k++)
+        vs->m[k] = m[k];
+    for (k = 0; k < 4; k++)
+        vs->bias[k] = (int64_t)m[k * 4 + 3] * ZL_FX_ONE + 32768;
+    vs->wd = s->width;
+    vs->ht = s->height;
+    vs->gx = s->width + 2u * ZL_GUARD_PX;
+    vs->gy = s->height + 2u * ZL_GUARD_PX;
+    vs->hx = s->width * (uint32_t)(ZL_SUB_ONE / 2);
+    vs->hy = s->height * (uint32_t)(ZL_SUB_ONE / 2);
+    vs->pfast = fast_bound(vs);
+    /* See vx_fast: x inside its planes and window x in [INT16_MIN + 2,
+     * INT16_MAX] when q < hx + G 2^SUB and q < 32767 - hx; y likewise with
+     * [INT16_MIN, INT16_MAX]. */
+    vs->qx = limit_below(vs->hx + (uint32_t)ZL_GUARD_PX * ZL_SUB_ONE, 32767 - (int32_t)vs->hx);
+    vs->qy = limit_below(vs->hy + (uint32_t)ZL_GUARD_PX * ZL_SUB_ONE, 32768 - (int32_t)vs->hy);
+    if (ZL_SUB_ONE < 2)
+        vs->qx = vs->qy = 0; /* h is not W 2^SUB / 2 then: no fast path */
+    return 1;
+}
+
+/* Row r of the transform, rounded as zl_transform_point; 0 if it leaves Q16.16.
+ * Three 32x32->64 multiply-accumulates (SMLAL on Cortex-M3/M4); the result
+ * fits when acc is in [-2^47, 2^47), i.e. its high word in [-2^15, 2^15). */
+static int vx_row(const vx_setup *vs, int r, const zl_fixed *p, int32_t *out)
+{
+    const zl_fixed *m = &vs->m[r * 4];
+    int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    if ((uint32_t)((uint64_t)acc >> 32) + 0x8000u > 0xFFFFu)
+        return 0;
+    *out = (int32_t)zl_floor_shift64(acc, 16);
+    return 1;
+}
+
+/*
+ * Inside all 7 planes of zl_outcode: w >= 1, 0 <= z <= w, and the left/right
+ * pair W x + (W + 2G) w >= 0, -W x + (W + 2G) w >= 0 is W |x| <= (W + 2G) w
+ * (w > 0); likewise for y. Unsigned 32x32->64 products: exact.
+ */
+static int vx_inside(const vx_setup *vs, uint32_t ax, uint32_t ay, int32_t z, int32_t w)
+{
+    if (w < 1 || z < 0 || z > w)
+        return 0;
+    return (uint64_t)ax * vs->wd <= (uint64_t)vs->gx * (uint32_t)w &&
+           (uint64_t)ay * vs->ht <= (uint64_t)vs->gy * (uint32_t)w;
+}
+
+/*
+ * zl_project's round((c + w) * h / w) as h + round(c * h / w), both exact:
+ * h is an integer. With n = c h, round(n / w) = floor((n + w/2) / w) is
+ * -floor((-n + w - 1 - w/2) / w) for n < 0, so one unsigned division of
+ * |n| plus a small offset serves both signs; inside the guard band the
+ * quotient is below 2^25, and |n| usually fits 32 bits (one UDIV).
+ */
+static int32_t vx_window(uint32_t h, int32_t c, int neg, uint32_t w)
+{
+    uint32_t ac = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
+    uint32_t half = w >> 1;
+    uint32_t q = udiv_small((uint64_t)ac * h + (neg ? w - 1u - half : half), w);
+    return neg ? (int32_t)h - (int32_t)q : (int32_t)(h + q);
+}
+
+static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed *p)
+{
+    zl_cached_vertex c;
+    int32_t x, y, z, w, wx, wy;
+    c.x = ZL_CACHE_INVALID;
+    c.y = 0;
+    c.z = 0;
+    if (!in_limit(p[0]) || !in_limit(p[1]) || !in_limit(p[2]) || !vx_row(vs, 0, p, &x) ||
+        !vx_row(vs, 1, p, &y) || !vx_row(vs, 2, p, &z) || !vx_row(vs, 3, p, &w))
+        return c;
+    c.x = ZL_CACHE_COMPLEX;
+    if (!vx_inside(vs, x < 0 ? 0u - (uint32_t)x : (uint32_t)x, y < 0 ? 0u - (uint32_t)y : (uint32_t)y, z, w))
+        return c;
+    wx = vx_window(vs->hx, x, x < 0, (uint32_t)w);
+    wy = vx_window(vs->hy, y, y > 0, (uint32_t)w); /* row 0 at the top: (w - y) h / w */
+    if (wx <= ZL_CACHE_INVALID || wx > INT16_MAX || wy < INT16_MIN || wy > INT16_MAX)
+        return c;
+    c.x = (int16_t)wx;
+    c.y = (int16_t)wy;
+    c.z = depth_q16((uint32_t)z, (uint32_t)w);
+    return c;
+}
+
+/* Row r of the transform when no range check is needed (vs->pfast). */
+static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_fixed *p)
+{
+    const zl_fixed *m = &vs->m[r * 4];
+    int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    return (int32_t)zl_floor_shift64(acc, 16); /* |acc| < 2^47 */
+}
+
+/*
+ * vx_cache for the common vertex, same numbers, or 0 when it cannot tell
+ * (then vx_cache decides). Positions within [-P, P): no range checks. With
+ * n = |c| h and q = floor((n + off) / w), 0 <= off < w, as vx_window: q is
+ * at least floor(n / w), so q < h + G 2^SUB gives n < (h + G 2^SUB) w,
+ * which is the pair of x planes multiplied by 2^SUB / 2 (W |x| <= (W + 2G) w).
+ * The window coordinate h -+ q is then in range when q < qx (qy).
+ */
+static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c)
+{
+    uint32_t pf = vs->pfast, ax, ay, q;
+    uint64_t n;
+    int32_t x, y, z, w, wx;
+    if ((((uint32_t)p[0] + pf) | ((uint32_t)p[1] + pf) | ((uint32_t)p[2] + pf)) >= 2u * pf)
+        return 0;
+    /* Each row where it is needed: the compiler keeps the order. */
+    w = vx_row_fast(vs, 3, p);
+    z = vx_row_fast(vs, 2, p);
+    if (w < 1 || (uint32_t)z > (uint32_t)w) {
+        c->x = ZL_CACHE_COMPLEX; /* outside the w, near or far plane */
+        c->y = 0;
+        c->z = 0;
+        return 1;
+    }
+    x = vx_row_fast(vs, 0, p);
+    ax = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+    /* vx_window's offset: w/2, or w - 1 - w/2 = (w - 1)/2 for the negative side */
+    n = (uint64_t)ax * vs->hx + (((uint32_t)w - (x < 0)) >> 1);
+    if ((n >> 32) != 0)
+        return 0;
+    q = (uint32_t)n / (uint32_t)w;
+    if (q >= vs->qx)
+        return 0;
+    wx = x < 0 ? (int32_t)vs->hx - (int32_t)q : (int32_t)(vs->hx + q);
+    y = vx_row_fast(vs, 1, p);
+    ay = y < 0 ? 0u - (uint32_t)y : (uint32_t)y;
+    n = (uint64_t)ay * vs->hy + (((uint32_t)w - (y > 0)) >> 1); /* row 0 at the top: (w - y) h / w */
+    if ((n >> 32) != 0)
+        return 0;
+    q = (uint32_t)n / (uint32_t)w;
+    if (q >= vs->qy)
+        return 0;
+    c->x = (int16_t)wx;
+    c->y = (int16_t)(y > 0 ? (int32_t)vs->hy - (int32_t)q : (int32_t)(vs->hy + q));
+    c->z = depth_q16((uint32_t)z, (uint32_t)w);
+    return 1;
+}
+
+zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
+{
+    vx_setup vs;
+    if (s->mvp == NULL)
+        return cache_vertex_generic(s, idx);
+    if (!vx_prepare(s, &vs)) {
+        zl_cached_vertex c = {ZL_CACHE_INVALID, 0, 0};
+        return c;
+    }
+    {
+        const zl_fixed *p = &s->mesh->positions[idx * 3u];
+        zl_cached_vertex c;
+        if (!vx_fast(&vs, p, &c))
+            c = vx_cache(&vs, p);
+        return c;
+    }
+}
+
+zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_t first, uint16_t count)
+{
+    const zl_cached_vertex bad = {ZL_CACHE_INVALID, 0, 0};
+    const zl_fixed *p = &s->mesh->positions[first * 3u];
+    zl_cached_vertex *c = &cache[first], *end = c + count;
+    zl_status st = ZL_OK;
+    vx_setup vs;
+    if (s->mvp == NULL) {
+        /* Pixel space: nothing can be out of range. */
+        uint32_t v;
+        for (v = first; v < (uint32_t)first + count; v++)
+            cache[v] = cache_vertex_generic(s, (uint16_t)v);
+        return ZL_OK;
+    }
+    if (!vx_prepare(s, &vs)) {
+        for (; c != end; c++)
+            *c = bad;
+        return ZL_ERR_RANGE;
+    }
+    for (; c != end; c++, p += 3) {
+        if (vx_fast(&vs, p, c))
+            continue;
+        *c = vx_cache(&vs, p);
+        if (c->x == ZL_CACHE_INVALID)
+            st = ZL_ERR_RANGE;
+    }
+    return st;
+}

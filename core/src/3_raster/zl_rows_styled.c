@@ -1,0 +1,249 @@
+/* placeholder */
+#include <string.h>
+
+#include "zl_raster.h"
+
+/* ------------------------------------------------- textures, perspective */
+
+/* One texel coordinate (1/256 texel) to a wrapped or clamped texel index. */
+static inline uint32_t texel_index(int64_t c8, uint16_t size, unsigned wrap)
+{
+    int64_t i = zl_floor_shift64(c8, 8);
+    if (wrap == ZL_WRAP_CLAMP)
+        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
+    return (uint32_t)i & (uint32_t)(size - 1u); /* two's complement: modulo a power of two */
+}
+
+/* (a q) / q for the perspective planes: one reciprocal R = 2^44 / Q and a
+ * multiplication; Q (q times 16) is clamped to 2^12 .. 2^29 so R fits 32
+ * bits and a R fits 64. */
+static inline uint64_t persp_recip(int64_t q)
+{
+    if (q < ((int64_t)1 << 12))
+        q = (int64_t)1 << 12;
+    if (q > ((int64_t)1 << 29))
+        q = (int64_t)1 << 29;
+    return ((uint64_t)1 << 44) / (uint64_t)q;
+}
+
+static inline int64_t persp_apply(int64_t a, uint64_t r)
+{
+    return zl_floor_shift64(a * (int64_t)r, 20);
+}
+
+static void unpack565(uint16_t t, unsigned *r, unsigned *g, unsigned *b)
+{
+    unsigned r5 = t >> 11, g6 = (t >> 5) & 63u, b5 = t & 31u;
+    *r = (r5 << 3) | (r5 >> 2);
+    *g = (g6 << 2) | (g6 >> 4);
+    *b = (b5 << 3) | (b5 >> 2);
+}
+
+/* Whether an affine coordinate plane (Q12 texels, stepped per pixel) stays
+ * within +-2^30 over a span of n pixels: then 32 bits hold it exactly. */
+static int affine_fits(int64_t a, int64_t da, int32_t n)
+{
+    const int64_t lim = (int64_t)1 << 30;
+    int64_t end = a + (int64_t)(n - 1) * da;
+    return a > -lim && a < lim && end > -lim && end < lim && da > -lim && da < lim;
+}
+
+static inline uint16_t texel_at(const zl_texture *tex, int64_t u8, int64_t v8)
+{
+    return tex->texels[(size_t)texel_index(v8, tex->height, tex->wrap_t) * tex->stride +
+                       texel_index(u8, tex->width, tex->wrap_s)];
+}
+
+static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, unsigned every, unsigned shift,
+                               uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, int64_t U,
+                               int64_t dU, int64_t V, int64_t dV, int64_t Q, int64_t dQ)
+{
+    int32_t i;
+    if (!persp) {
+        /* affine: 32-bit steppers (affine_fits checked the range) */
+        int32_t u = (int32_t)U, du = (int32_t)dU, v = (int32_t)V, dv = (int32_t)dV;
+        for (i = 0; i < n; i++) {
+            uint32_t d = depth_of(z);
+            if (depth_pass(func, d, zrow[i])) {
+                zrow[i] = (uint16_t)d;
+                crow[i] = texel_at(tex, zl_floor_shift64(u, 4), zl_floor_shift64(v, 4));
+            }
+            z += dz;
+            u += du;
+            v += dv;
+        }
+        return;
+    }
+    {
+        int64_t u8 = 0, v8 = 0, su = 0, sv = 0;
+        for (i = 0; i < n; i++) {
+            uint32_t d = depth_of(z);
+            if (every == 1) {
+                uint64_t r = persp_recip(Q);
+                u8 = persp_apply(U, r);
+                v8 = persp_apply(V, r);
+            } else if ((i & (int32_t)(every - 1)) == 0) {
+                uint64_t r = persp_recip(Q), r2 = persp_recip(Q + (int64_t)every * dQ);
+                u8 = persp_apply(U, r);
+                v8 = persp_apply(V, r);
+                su = zl_floor_shift64(persp_apply(U + (int64_t)every * dU, r2) - u8, shift);
+                sv = zl_floor_shift64(persp_apply(V + (int64_t)every * dV, r2) - v8, shift);
+            }
+            if (depth_pass(func, d, zrow[i])) {
+                zrow[i] = (uint16_t)d;
+                crow[i] = texel_at(tex, u8, v8);
+            }
+            z += dz;
+            Q += dQ;
+            U += dU;
+            V += dV;
+            u8 += su;
+            v8 += sv;
+        }
+    }
+}
+
+static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texplanes *tp, const zl_style *sty,
+                        const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
+{
+    const zl_texture *tex = sty->texcoords != NULL ? sty->texture : NULL;
+    const int64_t f16 = 1 << (ZL_ATTR_FRAC - 16), big = (int64_t)1 << 40;
+    int32_t x0 = t->left.x, x1 = t->right.x, i, n;
+    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE, pg = g != NULL && ss->gouraud;
+    unsigned every = sty->tex_every > 1 ? sty->tex_every : 1u, shift = 0, func = ss->func, light = t->light;
+    uint32_t z, dz;
+    int64_t U = 0, V = 0, Q, dU = 0, dV = 0, dQ, C[3] = {0, 0, 0}, dC[3] = {0, 0, 0};
+    int64_t u8 = 0, v8 = 0, su = 0, sv = 0;
+    uint8_t pix[3] = {0, 0, 0};
+    int k;
+    if (x0 < 0)
+        x0 = 0;
+    if (x1 > ss->width)
+        x1 = ss->width;
+    if (x0 >= x1)
+        return;
+    n = x1 - x0;
+    while ((1u << shift) < every)
+        shift++;
+    z = (uint32_t)zl_floor_shift64(attr_at(&t->z, x0, t->ax, (int64_t)t->zlo * f16, (int64_t)t->zhi * f16),
+                                   ZL_ATTR_FRAC - 14) + (1u << 13);
+    dz = step32(t->z.dx, ZL_ATTR_FRAC - 14);
+    Q = attr_at(&tp->q, x0, t->ax, -big, big);
+    dQ = tp->q.dx;
+    if (tex != NULL) {
+        U = attr_at(&tp->u, x0, t->ax, -big, big);
+        V = attr_at(&tp->v, x0, t->ax, -big, big);
+        dU = tp->u.dx;
+        dV = tp->v.dx;
+    }
+    if (pg)
+        for (k = 0; k < 3; k++) {
+            C[k] = attr_at(&g->c[k], x0, t->ax, -big, big);
+            dC[k] = g->c[k].dx;
+        }
+    crow = crow ? crow + (size_t)x0 * ss->bpp : NULL;
+    zrow = zrow ? zrow + x0 : NULL;
+    if ((crow == NULL && ss->bpp != 0) || (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS)))
+        return; /* as in row_span */
+    if (tex != NULL && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
+        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
+        (persp || (affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
+        /* The common case in its own loop: the texel is the pixel (RGB565,
+         * unlit, all channels), depth LESS or LEQUAL with writes; the same
+         * values as the general loop below, computed with fewer steps. */
+        if (func == ZL_LESS)
+            span_tex565(ZL_LESS, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+        else
+            span_tex565(ZL_LEQUAL, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
+                        dQ);
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (tex != NULL) {
+            if (!persp) {
+                u8 = zl_floor_shift64(U, 4);
+                v8 = zl_floor_shift64(V, 4);
+            } else if (every == 1) {
+                uint64_t r = persp_recip(Q);
+                u8 = persp_apply(U, r);
+                v8 = persp_apply(V, r);
+            } else if ((i & (int32_t)(every - 1)) == 0) {
+                /* exact here and N pixels on; linear steps between */
+                uint64_t r = persp_recip(Q), r2 = persp_recip(Q + (int64_t)every * dQ);
+                u8 = persp_apply(U, r);
+                v8 = persp_apply(V, r);
+                su = zl_floor_shift64(persp_apply(U + (int64_t)every * dU, r2) - u8, shift);
+                sv = zl_floor_shift64(persp_apply(V + (int64_t)every * dV, r2) - v8, shift);
+            }
+        }
+        if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
+            if (ss->zwrite)
+                zrow[i] = (uint16_t)d;
+            if (ss->bpp != 0) {
+                unsigned r, gg, b;
+                if (tex != NULL) {
+                    uint16_t tx = tex->texels[(size_t)texel_index(v8, tex->height, tex->wrap_t) * tex->stride +
+                                              texel_index(u8, tex->width, tex->wrap_s)];
+                    unpack565(tx, &r, &gg, &b);
+                    if (light != 255) {
+                        r = (r * light + 127) / 255;
+                        gg = (gg * light + 127) / 255;
+                        b = (b * light + 127) / 255;
+                    }
+                } else if (pg) {
+                    /* perspective Gouraud: (c q) / q, c in Q16 of 0..255 */
+                    uint64_t rq = persp_recip(Q);
+                    int64_t cc[3];
+                    for (k = 0; k < 3; k++) {
+                        cc[k] = zl_floor_shift64(persp_apply(C[k], rq) + (1 << 15), 16);
+                        cc[k] = cc[k] < 0 ? 0 : (cc[k] > 255 ? 255 : cc[k]);
+                    }
+                    r = (unsigned)cc[0];
+                    gg = (unsigned)cc[1];
+                    b = (unsigned)cc[2];
+                } else {
+                    r = t->rgb[0];
+                    gg = t->rgb[1];
+                    b = t->rgb[2];
+                }
+                pack_color((zl_format)ss->format, r, gg, b, pix);
+                put_pixel(crow + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+            }
+        }
+        z += dz;
+        Q += dQ;
+        U += dU;
+        V += dV;
+        u8 += su;
+        v8 += sv;
+        for (k = 0; k < 3; k++)
+            C[k] += dC[k];
+    }
+}
+
+int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_span_state *ss,
+                  uint8_t *color_row, uint16_t *depth_row)
+{
+    int k;
+    if (tp == NULL || !zl_style_needs_planes(sty))
+        return zl_tri_row(t, g, ss, color_row, depth_row);
+    row_span_ex(t, sty->persp_gouraud ? g : NULL, tp, sty, ss, color_row, depth_row);
+    edge_step(&t->left);
+    edge_step(&t->right);
+    t->z.row += t->z.dy;
+    if (g != NULL && ss->gouraud)
+        for (k = 0; k < 3; k++)
+            g->c[k].row += g->c[k].dy;
+    tp->u.row += tp->u.dy;
+    tp->v.row += tp->v.dy;
+    tp->q.row += tp->q.dy;
+    t->row++;
+    if (t->row == t->mid && t->row < t->end) {
+        if (t->lower_is_left)
+            t->left = t->lower;
+        else
+            t->right = t->lower;
+    }
+    return t->row < t->end;
+}

@@ -1,0 +1,355 @@
+/*
+ * Triangle scan conversion: classify (cull, row range), setup (edge steppers
+ * and attribute planes), and per-row span generation and fill.
+ *
+ * Coverage is decided exactly: at row j (centre y = 16 j + 8 subpixels) an
+ * edge from (xt, yt) down to (xb, yb) crosses at
+ *     xe = xt + (16 j + 8 - yt) * dx / dy,
+ * and the first pixel whose centre is at or right of it is
+ *     i = ceil((xe - 8) / 16) = ceil(N / D),
+ *     N = (xt - 8) dy + (16 j + 8 - yt) dx,   D = 16 dy.
+ * A left edge starts its span at i (centre on the edge: covered), a right edge
+ * ends it before i (centre on the edge: not covered); rows run from the first
+ * centre at or below the top vertex to the last centre above the bottom one.
+ * That is the top-left rule, in integers, and because N/D depends only on the
+ * edge's two endpoints, a shared edge splits its pixels identically for both
+ * triangles.
+ */
+#include <string.h>
+
+#include "zl_raster.h"
+
+static int64_t signed_area2(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c)
+{
+    return ((int64_t)b->x - a->x) * ((int64_t)c->y - a->y) -
+           ((int64_t)c->x - a->x) * ((int64_t)b->y - a->y);
+}
+
+int zl_tri_classify(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_state *st,
+                    uint16_t width, uint16_t height, int32_t *first, int32_t *end)
+{
+    int64_t area = signed_area2(a, b, c);
+    int front;
+    int32_t xmin, xmax;
+    if (area == 0)
+        return 0;
+    /* y grows down, so a positive area is clockwise as the viewer sees it. */
+    front = (area < 0) == (st->front_face == ZL_FRONT_CCW);
+    if ((st->cull == ZL_CULL_BACK && !front) || (st->cull == ZL_CULL_FRONT && front))
+        return 0;
+    *first = first_centre_at_or_after(min3(a->y, b->y, c->y));
+    *end = first_centre_at_or_after(max3(a->y, b->y, c->y));
+    if (*first < 0)
+        *first = 0;
+    if (*end > height)
+        *end = height;
+    if (*first >= *end)
+        return 0;
+    xmin = min3(a->x, b->x, c->x);
+    xmax = max3(a->x, b->x, c->x);
+    if (first_centre_at_or_after(xmin) >= width || first_centre_at_or_after(xmax) <= 0)
+        return 0;
+    return 1;
+}
+
+static void edge_init(zl_edge *e, const zl_wvert *top, const zl_wvert *bot, int32_t j)
+{
+    edge_init_xy(e, top->x, top->y, bot->x, bot->y, j);
+}
+
+/* round(s * 2^sh / c), c > 0, split into quotient and remainder so that no
+ * intermediate exceeds 64 bits; saturates at +-limit. */
+static int64_t muldiv_pow2_slow(int64_t s, unsigned sh, int64_t c, int64_t limit)
+{
+    int64_t q = s / c, r = s % c;
+    if (q > (limit >> sh) || q < -(limit >> sh))
+        return q > 0 ? limit : -limit;
+    return clamp64(q * ((int64_t)1 << sh) + zl_round_div64(r * ((int64_t)1 << sh), c), -limit, limit);
+}
+
+/*
+ * The same value, fast when the quotient fits 32 bits (every plane of an
+ * ordinary triangle): one 64-by-32 division of |s| 2^sh, by the reciprocal
+ * `inv` of c when the caller has one. round(x / c) is floor((x + h) / c)
+ * with h = floor(c / 2); for x = -m < 0 that is -floor((m - h + c - 1) / c).
+ * A quotient below 2^32 is far inside +-limit.
+ */
+static int64_t muldiv_pow2(int64_t s, unsigned sh, int64_t c, int64_t limit, const zl_div_inv *inv)
+{
+    uint64_t m, num;
+    uint32_t c32, q;
+    if (c > UINT32_MAX || s > (INT64_MAX >> (sh + 1)) || s < -(INT64_MAX >> (sh + 1)))
+        return muldiv_pow2_slow(s, sh, c, limit);
+    c32 = (uint32_t)c;
+    m = (uint64_t)(s < 0 ? -s : s) << sh;
+    num = s < 0 ? m - c32 / 2u + c32 - 1u : m + c32 / 2u;
+    if ((num >> 32) >= c32)
+        return muldiv_pow2_slow(s, sh, c, limit);
+    q = inv != NULL ? zl_div_inv_q(inv, num) : zl_udiv64_32(num, c32, NULL);
+    return s < 0 ? -(int64_t)q : (int64_t)q;
+}
+
+/* plane_small for a general frame when its vertices are small. */
+static int plane_fast(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1, int64_t a2)
+{
+    small_frame f;
+    int32_t d1, d2;
+    if (pf->inv == NULL || !pf->small || !diff32(a1, a0, &d1) || !diff32(a2, a0, &d2))
+        return 0;
+    f.dx1 = (int32_t)pf->dx1;
+    f.dy1 = (int32_t)pf->dy1;
+    f.dx2 = (int32_t)pf->dx2;
+    f.dy2 = (int32_t)pf->dy2;
+    f.ox = (int32_t)pf->ox;
+    f.oy = (int32_t)pf->oy;
+    f.rows = pf->first - pf->ay;
+    f.neg = pf->c < 0;
+    f.c32 = pf->c32;
+    f.inv = *pf->inv;
+    return plane_small(at, &f, a0, d1, d2);
+}
+
+/* Attribute plane through values a0, a1, a2 (Q16) at the sorted vertices. */
+static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1, int64_t a2)
+{
+    const unsigned sh = ZL_SUB_BITS + (ZL_ATTR_FRAC - 16);
+    int64_t da1 = a1 - a0, da2 = a2 - a0;
+    /* Solve da = alpha dx + beta dy for both edges (Cramer): alpha = ga / c,
+     * beta = gb / c; then make the denominator positive. */
+    int64_t ga = da1 * pf->dy2 - da2 * pf->dy1;
+    int64_t gb = pf->dx1 * da2 - pf->dx2 * da1;
+    int64_t c = pf->c, base;
+    if (plane_fast(at, pf, a0, a1, a2))
+        return;
+    if (c < 0) {
+        c = -c;
+        ga = -ga;
+        gb = -gb;
+    }
+    at->dx = muldiv_pow2(ga, sh, c, ZL_GRAD_LIMIT, pf->inv);
+    at->dy = muldiv_pow2(gb, sh, c, ZL_GRAD_LIMIT, pf->inv);
+    /* Value at the anchor pixel's centre, less than half a pixel from v0. */
+    base = a0 * (1 << (ZL_ATTR_FRAC - 16)) +
+           muldiv_pow2(ga * pf->ox + gb * pf->oy, ZL_ATTR_FRAC - 16, c, (int64_t)1 << 44, pf->inv);
+    at->row = base + (int64_t)(pf->first - pf->ay) * at->dy;
+}
+
+static void sort3(const zl_wvert **v)
+{
+    const zl_wvert *t;
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+    if (v[2]->y < v[1]->y) {
+        t = v[1];
+        v[1] = v[2];
+        v[2] = t;
+    }
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+}
+
+int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b,
+                 const zl_wvert *c, const zl_poly *poly, const zl_state *st, uint16_t width,
+                 uint16_t height)
+{
+    return zl_tri_setup_ex(t, g, NULL, NULL, a, b, c, poly, st, width, height);
+}
+
+int zl_style_needs_planes(const zl_style *sty)
+{
+    return sty != NULL && ((sty->texture != NULL && sty->texcoords != NULL) || sty->persp_gouraud);
+}
+
+/* Texture and perspective planes (see zl_texplanes). q_k = 2^24 wmin / w_k:
+ * 1/w up to a per-triangle scale, which cancels in (u q) / q. */
+static void tex_setup(zl_texplanes *tp, zl_gouraud *g, const zl_style *sty, const zl_wvert *const *v,
+                      const zl_poly *poly, const plane_frame *pf, const zl_state *st)
+{
+    /* poly is the p of a zl_tpoly (zl_tri_setup_ex's contract): the
+     * attributes of vertex v[k] are at its index in poly->v. */
+    const zl_tpoly *tpoly = (const zl_tpoly *)(const void *)poly;
+    int64_t q[3], a[3], b[3], u[3], vv[3], w[3], wmin;
+    int k, persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
+    for (k = 0; k < 3; k++) {
+        size_t i = (size_t)(v[k] - poly->v);
+        u[k] = tpoly->u[i];
+        vv[k] = tpoly->v[i];
+        w[k] = tpoly->w[i];
+    }
+    wmin = w[0] < w[1] ? w[0] : w[1];
+    wmin = wmin < w[2] ? wmin : w[2];
+    for (k = 0; k < 3; k++) {
+        q[k] = zl_round_div64(wmin << 24, w[k]);
+        if (q[k] < 256)
+            q[k] = 256; /* a w ratio beyond 2^16 inside one triangle */
+    }
+    plane_setup(&tp->q, pf, q[0], q[1], q[2]);
+    memset(&tp->u, 0, sizeof tp->u);
+    memset(&tp->v, 0, sizeof tp->v);
+    if (sty->texture != NULL && sty->texcoords != NULL) {
+        for (k = 0; k < 3; k++) {
+            a[k] = persp ? zl_floor_shift64(u[k] * q[k] + ((int64_t)1 << 23), 24) : u[k];
+            b[k] = persp ? zl_floor_shift64(vv[k] * q[k] + ((int64_t)1 << 23), 24) : vv[k];
+        }
+        plane_setup(&tp->u, pf, a[0], a[1], a[2]);
+        plane_setup(&tp->v, pf, b[0], b[1], b[2]);
+    }
+    if (g != NULL && sty->persp_gouraud && st->shading == ZL_SHADE_GOURAUD) {
+        int ch;
+        for (ch = 0; ch < 3; ch++) {
+            for (k = 0; k < 3; k++) {
+                int64_t cq = ch == 0 ? v[k]->r : (ch == 1 ? v[k]->g : v[k]->b);
+                a[k] = zl_floor_shift64(cq * 256 * q[k] + ((int64_t)1 << 23), 24);
+            }
+            plane_setup(&g->c[ch], pf, a[0], a[1], a[2]);
+        }
+    }
+}
+
+int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                    const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st,
+                    uint16_t width, uint16_t height)
+{
+    int32_t first, end;
+    if (!zl_tri_classify(a, b, c, st, width, height, &first, &end))
+        return 0;
+    zl_tri_setup_rows(t, g, tp, sty, a, b, c, poly, st, first, end);
+    return 1;
+}
+
+void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                       const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st, int32_t first,
+                       int32_t end)
+{
+    const zl_wvert *v[3];
+    int32_t mid;
+    int64_t cross;
+    plane_frame pf;
+    zl_div_inv inv;
+    zl_edge upper;
+    int long_left, k;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    sort3(v);
+    cross = signed_area2(v[0], v[1], v[2]);
+    long_left = cross > 0; /* v1 right of the long edge v0 -> v2 */
+    mid = first_centre_at_or_after(v[1]->y);
+    if (mid < first)
+        mid = first;
+    if (mid > end)
+        mid = end;
+    t->kind = ZL_KIND_TRI;
+    t->row = (int16_t)first;
+    t->mid = (int16_t)mid;
+    t->end = (int16_t)end;
+    t->lower_is_left = (uint8_t)!long_left;
+    if (long_left)
+        edge_init(&t->left, v[0], v[2], first);
+    else
+        edge_init(&t->right, v[0], v[2], first);
+    if (mid < end)
+        edge_init(&t->lower, v[1], v[2], mid);
+    if (first < mid) {
+        edge_init(&upper, v[0], v[1], first);
+    } else {
+        upper = t->lower;
+    }
+    if (long_left)
+        t->right = upper;
+    else
+        t->left = upper;
+
+    pf.dx1 = (int64_t)v[1]->x - v[0]->x;
+    pf.dy1 = (int64_t)v[1]->y - v[0]->y;
+    pf.dx2 = (int64_t)v[2]->x - v[0]->x;
+    pf.dy2 = (int64_t)v[2]->y - v[0]->y;
+    pf.c = cross;
+    pf.inv = NULL;
+    pf.c32 = 0;
+    if (cross != 0 && cross >= -(int64_t)UINT32_MAX && cross <= (int64_t)UINT32_MAX) {
+        pf.c32 = (uint32_t)(cross < 0 ? -cross : cross);
+        zl_div_inv_init(&inv, pf.c32);
+        pf.inv = &inv;
+    }
+    pf.small = pf.dx1 > -(1 << 17) && pf.dx1 < (1 << 17) && pf.dy1 < (1 << 17) && pf.dx2 > -(1 << 17) &&
+               pf.dx2 < (1 << 17) && pf.dy2 < (1 << 17); /* dy >= 0: the vertices are sorted by y */
+    pf.ax = (int32_t)zl_floor_shift64(v[0]->x, ZL_SUB_BITS);
+    pf.ay = (int32_t)zl_floor_shift64(v[0]->y, ZL_SUB_BITS);
+    pf.ox = (int64_t)pf.ax * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->x;
+    pf.oy = (int64_t)pf.ay * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->y;
+    pf.first = first;
+    t->ax = pf.ax;
+    plane_setup(&t->z, &pf, v[0]->z, v[1]->z, v[2]->z);
+    t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
+    t->zlo = v[0]->z;
+    t->zhi = v[0]->z;
+    for (k = 1; k < 3; k++) {
+        if (v[k]->z < t->zlo)
+            t->zlo = v[k]->z;
+        if (v[k]->z > t->zhi)
+            t->zhi = v[k]->z;
+    }
+    if (poly != NULL) { /* NULL: the caller sets the colour and light itself */
+        t->rgb[0] = poly->flat.r;
+        t->rgb[1] = poly->flat.g;
+        t->rgb[2] = poly->flat.b;
+        t->light = poly->light;
+    }
+    if (g != NULL && st->shading == ZL_SHADE_GOURAUD) {
+        /* Colours are Q8; the plane takes Q16. */
+        plane_setup(&g->c[0], &pf, (int64_t)v[0]->r * 256, (int64_t)v[1]->r * 256, (int64_t)v[2]->r * 256);
+        plane_setup(&g->c[1], &pf, (int64_t)v[0]->g * 256, (int64_t)v[1]->g * 256, (int64_t)v[2]->g * 256);
+        plane_setup(&g->c[2], &pf, (int64_t)v[0]->b * 256, (int64_t)v[1]->b * 256, (int64_t)v[2]->b * 256);
+    }
+    if (tp != NULL && zl_style_needs_planes(sty))
+        tex_setup(tp, g, sty, v, poly, &pf, st);
+}
+
+/* ------------------------------------------------------ polygon offset */
+
+int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_style *sty)
+{
+    /* units * r: r is one stored step, 2^20 in Q20; units is Q16.16. */
+    int64_t off;
+    if (sty == NULL || (sty->offset_factor == 0 && sty->offset_units == 0))
+        return 0;
+    off = (int64_t)sty->offset_units * (1 << (ZL_ATTR_FRAC - 16));
+    if (sty->offset_factor != 0) {
+        /* The depth plane's gradients as plane_setup solves them (Cramer). */
+        const unsigned sh = ZL_SUB_BITS + (ZL_ATTR_FRAC - 16);
+        const int64_t limit = (int64_t)65535 << ZL_ATTR_FRAC; /* the whole range per pixel */
+        int64_t dx1 = (int64_t)b->x - a->x, dy1 = (int64_t)b->y - a->y;
+        int64_t dx2 = (int64_t)c->x - a->x, dy2 = (int64_t)c->y - a->y;
+        int64_t da1 = (int64_t)b->z - a->z, da2 = (int64_t)c->z - a->z;
+        int64_t ga = da1 * dy2 - da2 * dy1, gb = dx1 * da2 - dx2 * da1, cr = dx1 * dy2 - dx2 * dy1;
+        int64_t mx, my, m;
+        if (cr == 0)
+            return off;
+        if (cr < 0)
+            cr = -cr;
+        ga = ga < 0 ? -ga : ga;
+        gb = gb < 0 ? -gb : gb;
+        mx = muldiv_pow2(ga, sh, cr, limit, NULL);
+        my = muldiv_pow2(gb, sh, cr, limit, NULL);
+        m = mx > my ? mx : my;
+        /* |factor| <= 2^24 and m <= 2^36: the product fits 64 bits. */
+        off += zl_floor_shift64((int64_t)sty->offset_factor * m, 16);
+    }
+    return off;
+}
+
+void zl_tri_apply_offset(zl_active *t, int64_t offset)
+{
+    const int64_t top = (int64_t)65535 << 16;
+    int64_t o16 = zl_floor_shift64(offset, ZL_ATTR_FRAC - 16);
+    t->z.row += offset;
+    t->zlo = (uint32_t)clamp64((int64_t)t->zlo + o16, 0, top);
+    t->zhi = (uint32_t)clamp64((int64_t)t->zhi + o16, 0, top);
+}

@@ -1,0 +1,252 @@
+/* placeholder */
+#include <string.h>
+
+#include "zl_raster.h"
+
+/* Sort three cached vertices by y with sort3's comparisons (so the same
+ * order on ties), and find their rows [first, end) in a target of `height`
+ * rows and the row `mid` where the lower short edge takes over. 0 when no
+ * row is in the target. */
+static ZL_ALWAYS_INLINE int cached_rows(const zl_cached_vertex **v, uint16_t height, int32_t *first, int32_t *mid,
+                                        int32_t *end)
+{
+    const zl_cached_vertex *t;
+    int32_t m;
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+    if (v[2]->y < v[1]->y) {
+        t = v[1];
+        v[1] = v[2];
+        v[2] = t;
+    }
+    if (v[1]->y < v[0]->y) {
+        t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+    }
+    *first = first_centre_at_or_after(v[0]->y);
+    *end = first_centre_at_or_after(v[2]->y);
+    if (*first < 0)
+        *first = 0;
+    if (*end > height)
+        *end = height;
+    m = first_centre_at_or_after(v[1]->y);
+    *mid = m < *first ? *first : (m > *end ? *end : m);
+    return *first < *end;
+}
+
+/* The rest of a small frame, once its edge vectors are in: the divisor
+ * |cross| (below 2^32) and its reciprocal where round_div_frame uses one,
+ * and the anchor pixel of the sorted v0. Returns the anchor column. */
+static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cached_vertex *v0, int32_t first,
+                                                   int64_t cross)
+{
+    int32_t ax = zl_floor_shift32(v0->x, ZL_SUB_BITS), ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
+    f->neg = cross < 0;
+    f->c32 = (uint32_t)(cross < 0 ? -cross : cross);
+    f->ox = ax * ZL_SUB_ONE + ZL_SUB_HALF - v0->x;
+    f->oy = ay * ZL_SUB_ONE + ZL_SUB_HALF - v0->y;
+    f->rows = first - ay;
+    if (f->c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
+        zl_div_inv_init(&f->inv, f->c32);
+    return ax;
+}
+
+/* zl_tri_setup_flat's triangle by the general setup (zl_tri_classify and
+ * zl_tri_setup_rows on window vertices), for numbers beyond 32 bits. Out of
+ * line, so the common case does not carry its frame. */
+static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *const *c, const zl_state *st,
+                                          uint16_t width, uint16_t height)
+{
+    zl_wvert w[3];
+    int32_t first, end;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        w[k].x = c[k]->x;
+        w[k].y = c[k]->y;
+        w[k].z = c[k]->z;
+        w[k].r = 0; /* vertex colours only matter to Gouraud shading */
+        w[k].g = 0;
+        w[k].b = 0;
+    }
+    if (!zl_tri_classify(&w[0], &w[1], &w[2], st, width, height, &first, &end))
+        return 0;
+    zl_tri_setup_rows(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, st, first, end);
+    return 1;
+}
+
+/*
+ * The 32-bit setup of zl_tri_setup_flat: 1 set up, 0 no row or column in
+ * the target, -1 when its numbers leave the 32-bit shortcuts (|cross| >=
+ * 2^32, depth differences beyond 2^31, a quotient beyond 32 bits).
+ */
+static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                         const zl_cached_vertex *c, uint16_t width, uint16_t height)
+{
+    const zl_cached_vertex *v[3], *v0, *v1, *v2;
+    int32_t first, end, mid, ax, d1, d2;
+    int64_t cross;
+    small_frame f;
+    zl_edge upper;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    if (!cached_rows(v, height, &first, &mid, &end) || first_centre_at_or_after(min3(a->x, b->x, c->x)) >= width ||
+        first_centre_at_or_after(max3(a->x, b->x, c->x)) <= 0)
+        return 0;
+    v0 = v[0];
+    v1 = v[1];
+    v2 = v[2];
+    f.dx1 = v1->x - v0->x;
+    f.dy1 = v1->y - v0->y;
+    f.dx2 = v2->x - v0->x;
+    f.dy2 = v2->y - v0->y;
+    cross = (int64_t)f.dx1 * f.dy2 - (int64_t)f.dx2 * f.dy1;
+    if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
+        !depth_diff32(v2->z, v0->z, &d2))
+        return -1;
+    ax = small_frame_anchor(&f, v0, first, cross);
+    if (!plane_small(&t->z, &f, v0->z, d1, d2))
+        return -1;
+    t->kind = ZL_KIND_TRI;
+    t->row = (int16_t)first;
+    t->mid = (int16_t)mid;
+    t->end = (int16_t)end;
+    t->lower_is_left = (uint8_t)(cross <= 0);
+    edge_init_xy(cross > 0 ? &t->left : &t->right, v0->x, v0->y, v2->x, v2->y, first);
+    if (mid < end)
+        edge_init_xy(&t->lower, v1->x, v1->y, v2->x, v2->y, mid);
+    if (first < mid)
+        edge_init_xy(&upper, v0->x, v0->y, v1->x, v1->y, first);
+    else
+        upper = t->lower;
+    if (cross > 0)
+        t->right = upper;
+    else
+        t->left = upper;
+    t->ax = ax;
+    t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
+    t->zlo = v0->z < v1->z ? v0->z : v1->z;
+    t->zlo = v2->z < t->zlo ? v2->z : t->zlo;
+    t->zhi = v0->z > v1->z ? v0->z : v1->z;
+    t->zhi = v2->z > t->zhi ? v2->z : t->zhi;
+    return 1;
+}
+
+int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                      const zl_cached_vertex *c, const zl_state *st, uint16_t width, uint16_t height)
+{
+    int set = setup_flat_32(t, a, b, c, width, height);
+    if (set >= 0)
+        return set;
+    {
+        const zl_cached_vertex *v[3];
+        v[0] = a;
+        v[1] = b;
+        v[2] = c;
+        return setup_flat_general(t, v, st, width, height);
+    }
+}
+
+/* ---------------------------------------- small flat triangles, frame mode */
+
+/*
+ * A cached flat triangle drawn without a zl_active record, for the common
+ * frame-mode case: every number of it fits 32 bits. Its edges are not
+ * stepped by the DDA of zl_edge but evaluated per row, x(j) = ceil(N(j) /
+ * D) with N(j) = N(first) + (j - first) 16 dx: the same quotient the DDA
+ * keeps, from one division, and a set-up of three numbers per edge instead
+ * of two divisions and two products. For the small triangles of a real mesh
+ * (a few rows each) that is the cheaper side of the trade.
+ */
+/* The edge from (xt, yt) down to (xb, yb) from row j0 on. The caller has
+ * checked the triangle's bound (zl_tiny_setup), so N fits 32 bits. */
+static ZL_ALWAYS_INLINE void tiny_edge_init(zl_tiny_edge *e, int32_t xt, int32_t yt, int32_t xb, int32_t yb,
+                                            int32_t j0)
+{
+    int32_t dy = yb - yt, dx = xb - xt;
+    e->n = (xt - ZL_SUB_HALF) * dy + (j0 * ZL_SUB_ONE + ZL_SUB_HALF - yt) * dx;
+    e->inc = dx * ZL_SUB_ONE;
+    e->d = dy * ZL_SUB_ONE;
+}
+
+/*
+ * The depth plane of a small triangle in 32 bits. A row's span starts at a
+ * pixel centre inside the triangle, where the exact plane lies within the
+ * vertex range [zlo, zhi] and the rounded one within 2^10 of it (half a
+ * unit of gradient per pixel and row from the anchor, at most 2^13 of
+ * them). Relative to off, the largest multiple of 64 (Q20) not above the
+ * lowest vertex depth, that value fits 32 bits when zhi - zlo < 2^25, and
+ * floor(v / 64) = floor((v - off) / 64) + off / 64 keeps the shift exact.
+ * The row and gradient values themselves may be anything (far outside the
+ * triangle for a sliver): they are kept modulo 2^32, which leaves a sum
+ * that fits exact. 0 when the depth range is too wide.
+ */
+static void tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t zlo, uint32_t zhi)
+{
+    uint32_t off = (zlo >> 2) << (ZL_ATTR_FRAC - 14); /* the low word of off, which is all that matters */
+    tt->zr = (uint32_t)(uint64_t)z->row - off;
+    tt->zdy = (uint32_t)(uint64_t)z->dy;
+    tt->zdx = (uint32_t)(uint64_t)z->dx;
+    tt->zlo = (int32_t)((zlo << (ZL_ATTR_FRAC - 16)) - off); /* 0 .. 63 */
+    tt->zhi = (int32_t)((zhi << (ZL_ATTR_FRAC - 16)) - off);
+    tt->zbase = (zlo >> 2) + (1u << 13);
+    /* step32 of a gradient below 2^32 (plane_small's quotients): no clamp */
+    tt->dz14 = (uint32_t)zl_floor_shift64(z->dx, ZL_ATTR_FRAC - 14);
+}
+
+int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                  uint16_t width, uint16_t height)
+{
+    const zl_cached_vertex *v[3], *v0, *v1, *v2;
+    int32_t first, end, mid, ax, d1, d2, cross;
+    uint32_t zlo, zhi;
+    small_frame f;
+    zl_attr z;
+    /* zl_tri_classify's column test is left out: a triangle entirely left or
+     * right of the target clamps every span to nothing in the row loop, so
+     * it draws the same nothing, and on-screen meshes save the test. */
+    (void)width;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    if (!cached_rows(v, height, &first, &mid, &end))
+        return 0;
+    v0 = v[0];
+    v1 = v[1];
+    v2 = v[2];
+    f.dx1 = v1->x - v0->x;
+    f.dy1 = v1->y - v0->y;
+    f.dx2 = v2->x - v0->x;
+    f.dy2 = v2->y - v0->y;
+    /* Every |x| below 2^13 and a height below 2^13 subpixels: then each edge's
+     * N = (xt - 8) dy + (16 j + 8 - yt) dx, on its rows, stays below
+     * 2^13 (2^13 + 8 + 2^14) < 2^28 in magnitude, the cross product below
+     * 2^29, and 32-bit arithmetic is exact. */
+    zlo = v0->z < v1->z ? (v0->z < v2->z ? v0->z : v2->z) : (v1->z < v2->z ? v1->z : v2->z);
+    zhi = v0->z > v1->z ? (v0->z > v2->z ? v0->z : v2->z) : (v1->z > v2->z ? v1->z : v2->z);
+    if (a->x <= -8192 || a->x >= 8192 || b->x <= -8192 || b->x >= 8192 || c->x <= -8192 || c->x >= 8192 ||
+        f.dy2 >= 8192 || zhi - zlo >= (1u << 25)) /* (tiny_depth's bound) */
+        return -1;
+    d1 = (int32_t)(v1->z - v0->z); /* below 2^25 in magnitude */
+    d2 = (int32_t)(v2->z - v0->z);
+    tiny_edge_init(&tt->lng, v0->x, v0->y, v2->x, v2->y, first);
+    if (first < mid) /* only edges with rows are read */
+        tiny_edge_init(&tt->up, v0->x, v0->y, v1->x, v1->y, first);
+    if (mid < end)
+        tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
+    cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
+    ax = small_frame_anchor(&f, v0, first, cross);
+    if (!plane_small(&z, &f, v0->z, d1, d2))
+        return -1;
+    tiny_depth(tt, &z, zlo, zhi);
+    tt->ax = ax;
+    tt->first = first;
+    tt->mid = mid;
+    tt->end = end;
+    tt->long_left = cross > 0;
+    return 1;
+}

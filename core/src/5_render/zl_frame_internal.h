@@ -1,0 +1,82 @@
+/*
+ * Stage 5, render: the records of scanline and band mode shared by its three
+ * files (zl_frame.c submission, zl_frame_plan.c planning, zl_frame_rows.c
+ * rows). Calls run rows -> plan -> submission helpers, never back.
+ */
+#ifndef ZL_FRAME_INTERNAL_H
+#define ZL_FRAME_INTERNAL_H
+
+#include "../1_base/zl_internal.h"
+#include "../3_raster/zl_span.h"
+
+struct zl_frame_mesh {
+    zl_mesh mesh;
+    zl_mat4 mvp;
+    zl_state state;
+    zl_span_state span;
+    uint8_t flags;      /* MESH_*, in bytes that were padding: the layout does not change */
+    uint8_t cull_code;  /* culled_area_sign of the state, plus 1 (0, 1 or 2) */
+    uint32_t tri_base, vert_base;
+};
+
+#define MESH_MVP 1u       /* mvp holds the transform (else pixel space) */
+#define MESH_FLAT 2u      /* plain flat fill: cached triangles set up by zl_tri_setup_flat */
+#define MESH_ROW565 4u    /* MESH_FLAT with RGB565 spans, depth LESS or LEQUAL written, every channel */
+#define MESH_CACHED 8u    /* its vertex cache entries were filled when it was added */
+
+/* Per-mesh record of the styled features (only with cfg.styled). */
+typedef struct {
+    zl_style style;
+    zl_lines lines;     /* is_lines == 1 */
+    zl_mesh mesh;       /* is_lines == 2: the outlined mesh ... */
+    zl_outline outline; /* ... and its outline */
+    uint8_t is_lines;
+} zl_frame_ext;
+
+#define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
+
+typedef struct {
+    size_t meshes, vcache, row_start, visible, pool, gouraud, ext, tex, depth, color0, color1, total;
+} layout;
+
+ZL_SHARED_STATIC zl_frame_ext *ext_of(const zl_frame *f, unsigned mi)
+{
+    return f->ext ? (zl_frame_ext *)(void *)(f->ext + (size_t)mi * sizeof(zl_frame_ext)) : NULL;
+}
+
+ZL_SHARED_STATIC const zl_style *style_of(const zl_frame *f, unsigned mi)
+{
+    return f->ext ? &ext_of(f, mi)->style : NULL;
+}
+
+ZL_SHARED_STATIC zl_cached_vertex *cache_of(const zl_frame *f)
+{
+    return (zl_cached_vertex *)(void *)f->vcache;
+}
+
+ZL_SHARED_STATIC void source_of(const zl_frame *f, const zl_frame_mesh *m, zl_source *s)
+{
+    s->mesh = &m->mesh;
+    s->mvp = (m->flags & MESH_MVP) ? &m->mvp : NULL;
+    s->state = &m->state;
+    s->cache = cache_of(f) + m->vert_base;
+    s->width = f->cfg.width;
+    s->height = f->cfg.height;
+}
+
+/* Record of primitive t of a lines or outline mesh record. */
+ZL_SHARED_STATIC int prim_record(const zl_frame *f, unsigned mi, const zl_source *s, uint32_t t, zl_active *rec)
+{
+    const zl_frame_ext *e = ext_of(f, mi);
+    if (e->is_lines == 2)
+        return zl_outline_record(s, &e->mesh, &e->outline, &e->style, t, rec);
+    return zl_lines_record(s, &e->lines, &e->style, &f->meshes[mi].state, t, rec);
+}
+
+/* Offsets of every region of the work buffer (zl_frame.c); 0 when the
+ * configuration is invalid. */
+int zl_frame_layout(const zl_frame_config *c, layout *l);
+/* Planning, on the first band (zl_frame_plan.c). */
+zl_status zl_frame_plan(zl_frame *f);
+
+#endif /* ZL_FRAME_INTERNAL_H */

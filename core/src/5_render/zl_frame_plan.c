@@ -1,0 +1,321 @@
+#include <string.h>
+
+#include "zl_frame_internal.h"
+
+static void fill_cache(zl_frame *f)
+{
+    uint16_t mi;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        zl_source s;
+        source_of(f, m, &s);
+        /* add_record checked the transform limits: the status is ZL_OK */
+        if (!(m->flags & MESH_CACHED) && m->mesh.vertex_count != 0)
+            (void)zl_cache_vertices(&s, cache_of(f) + m->vert_base, 0, m->mesh.vertex_count);
+    }
+}
+
+/* State of a classification pass. The count pass (diff != NULL) counts first
+ * rows in row_start, adds each primitive's pieces over its rows to diff,
+ * writes the ids of the visible primitives in id order to visible[] (while
+ * they fit) and their first rows to the keys (while they fit). The place pass
+ * (diff == NULL) drops each id into its bucket of visible[]. */
+typedef struct {
+    int32_t *diff;
+    uint16_t *key_a, *key_b; /* spare work-buffer regions holding first rows */
+    uint32_t na, nb;         /* their capacities, in keys */
+    uint32_t n;              /* visible primitives so far */
+} plan_pass;
+
+static uint16_t *key_at(const plan_pass *p, uint32_t k)
+{
+    return k < p->na ? &p->key_a[k] : &p->key_b[k - p->na];
+}
+
+/* Record visible primitive id with row range [first, end) and its pieces. */
+static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+{
+    if (p->diff == NULL) {
+        f->visible[f->row_start[first]++] = (uint16_t)id;
+    } else {
+        f->row_start[first]++;
+        p->diff[first] += (int32_t)pieces;
+        p->diff[end] -= (int32_t)pieces;
+        if (p->n < f->cfg.max_triangles)
+            f->visible[p->n] = (uint16_t)id;
+        if (p->n < p->na + p->nb)
+            *key_at(p, p->n) = (uint16_t)first;
+    }
+    p->n++;
+}
+
+/* Lines and outline records: one record per primitive. Out of line, like the
+ * next one, so its record is not on the stack of the clipping path. */
+static ZL_NOINLINE void classify_lines(zl_frame *f, plan_pass *p, unsigned mi, const zl_source *s)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    uint32_t t;
+    for (t = 0; t < m->mesh.triangle_count; t++) {
+        zl_active rec;
+        if (prim_record(f, mi, s, t, &rec))
+            note(f, p, m->tri_base + t, rec.row, rec.end, 1);
+    }
+}
+
+/* Triangles in line or point polygon modes: the row ranges of their pieces,
+ * from a full setup (the colour does not matter here). */
+static ZL_NOINLINE void classify_pieces(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                        const zl_style *sty)
+{
+    uint32_t t;
+    for (t = 0; t < m->mesh.triangle_count; t++) {
+        zl_poly poly;
+        unsigned k, n, pieces = 0;
+        int32_t first = INT16_MAX, end = 0;
+        if (!zl_tri_polygon_geom(s, sty, t, &poly))
+            continue;
+        poly.light = 255;
+        poly.flat.r = poly.flat.g = poly.flat.b = 0;
+        n = zl_tri_pieces(s, sty, t, &poly);
+        for (k = 0; k < n; k++) {
+            zl_active rec;
+            if (!zl_tri_piece(s, sty, t, &poly, k, &rec, NULL, NULL))
+                continue;
+            pieces++;
+            if (rec.row < first)
+                first = rec.row;
+            if (rec.end > end)
+                end = rec.end;
+        }
+        if (pieces != 0)
+            note(f, p, m->tri_base + t, first, end, pieces);
+    }
+}
+
+/* The index of the first row (or column) whose centre is at or after
+ * subpixel coordinate v (zl_raster.c's first_centre_at_or_after). */
+static int32_t centre_at_or_after(int32_t v)
+{
+    return zl_floor_shift32(v - ZL_SUB_HALF + ZL_SUB_ONE - 1, ZL_SUB_BITS);
+}
+
+/* zl_tri_classify of a triangle whose three vertices are cached inside the
+ * clip volume (then its polygon is the triangle itself, one piece): the
+ * same area test, row range and column test, on the int16 coordinates
+ * (whose products fit 64 bits). cull_sign: culled_area_sign. */
+static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                            const zl_cached_vertex *c, int cull_sign, uint16_t width,
+                                            uint16_t height, int32_t *first, int32_t *end)
+{
+    int32_t ymin = a->y, xmin = a->x, ymax, xmax;
+    int64_t p = (int64_t)(b->x - a->x) * (c->y - a->y), q = (int64_t)(c->x - a->x) * (b->y - a->y);
+    ymax = ymin;
+    xmax = xmin;
+    if (p == q || (p < q ? -1 : 1) == cull_sign)
+        return 0;
+    if (b->y < ymin)
+        ymin = b->y;
+    if (b->y > ymax)
+        ymax = b->y;
+    if (c->y < ymin)
+        ymin = c->y;
+    if (c->y > ymax)
+        ymax = c->y;
+    *first = centre_at_or_after(ymin);
+    *end = centre_at_or_after(ymax);
+    if (*first < 0)
+        *first = 0;
+    if (*end > height)
+        *end = height;
+    if (*first >= *end)
+        return 0;
+    if (b->x < xmin)
+        xmin = b->x;
+    if (b->x > xmax)
+        xmax = b->x;
+    if (c->x < xmin)
+        xmin = c->x;
+    if (c->x > xmax)
+        xmax = c->x;
+    return centre_at_or_after(xmin) < width && centre_at_or_after(xmax) > 0;
+}
+
+/* Filled triangle t that needs clipping (or is dropped): the row range of
+ * every fan triangle of its polygon. Out of line, so the polygon is not on
+ * the stack (nor in the registers) of the loop below. */
+static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                         const zl_style *sty, uint32_t t)
+{
+    zl_poly poly;
+    unsigned k, pieces = 0;
+    int32_t first = INT16_MAX, end = 0;
+    if (!zl_tri_polygon_geom(s, sty, t, &poly))
+        return;
+    for (k = 1; k + 1 < poly.n; k++) {
+        int32_t a, b;
+        if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, s->width, s->height, &a, &b))
+            continue;
+        pieces++;
+        if (a < first)
+            first = a;
+        if (b > end)
+            end = b;
+    }
+    if (pieces != 0)
+        note(f, p, m->tri_base + t, first, end, pieces);
+}
+
+/* Filled triangles: the row range of every fan triangle of the polygon;
+ * a triangle with its three vertices cached inside is its own polygon, one
+ * piece, classified on the cache (and noted here with the counters in
+ * locals: note's work for one piece). */
+static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                      const zl_style *sty)
+{
+    uint16_t w = f->cfg.width, h = f->cfg.height;
+    uint32_t t, count = m->mesh.triangle_count, n = p->n, id = m->tri_base;
+    uint32_t max_visible = f->cfg.max_triangles, na = p->na, nkeys = p->na + p->nb;
+    const uint16_t *idx = m->mesh.indices;
+    const zl_cached_vertex *cache = s->cache;
+    uint16_t *row_start = f->row_start, *visible = f->visible;
+    int32_t *diff = p->diff;
+    int cull_sign = (int)m->cull_code - 1;
+    for (t = 0; t < count; t++, id++, idx += 3) {
+        int32_t first, end;
+        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
+            p->n = n;
+            classify_polygon(f, p, m, s, sty, t);
+            n = p->n;
+            continue;
+        }
+        if (!classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
+            continue;
+        if (diff == NULL) {
+            visible[row_start[first]++] = (uint16_t)id;
+        } else {
+            row_start[first]++;
+            diff[first] += 1;
+            diff[end] -= 1;
+            if (n < max_visible)
+                visible[n] = (uint16_t)id;
+            if (n < na)
+                p->key_a[n] = (uint16_t)first;
+            else if (n < nkeys)
+                p->key_b[n - na] = (uint16_t)first;
+        }
+        n++;
+    }
+    p->n = n;
+}
+
+/* One pass over every primitive of every mesh; returns the visible ones. */
+static uint32_t classify_pass(zl_frame *f, plan_pass *p)
+{
+    uint16_t mi;
+    p->n = 0;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        const zl_style *sty = style_of(f, mi);
+        zl_source s;
+        source_of(f, m, &s);
+        if (sty != NULL && ext_of(f, mi)->is_lines)
+            classify_lines(f, p, mi, &s);
+        else if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
+            classify_pieces(f, p, m, &s, sty);
+        else
+            classify_fill(f, p, m, &s, sty);
+    }
+    return p->n;
+}
+
+/* Bucket visible[0 .. n) by the first rows in the keys, stably and in place:
+ * each key becomes its element's place, then the permutation is applied a
+ * cycle at a time. row_start holds the bucket starts and ends at the ends. */
+static void place_by_keys(zl_frame *f, const plan_pass *p, uint32_t n)
+{
+    uint16_t *row_start = f->row_start, *visible = f->visible;
+    uint32_t k;
+    if (n <= p->na) { /* all keys in the first region (the usual case) */
+        uint16_t *key = p->key_a;
+        for (k = 0; k < n; k++)
+            key[k] = row_start[key[k]]++;
+        for (k = 0; k < n; k++) {
+            while (key[k] != k) {
+                uint16_t j = key[k], id = visible[k];
+                visible[k] = visible[j];
+                visible[j] = id;
+                key[k] = key[j];
+                key[j] = j;
+            }
+        }
+        return;
+    }
+    for (k = 0; k < n; k++) {
+        uint16_t *key = key_at(p, k);
+        *key = row_start[*key]++;
+    }
+    for (k = 0; k < n; k++) {
+        uint16_t *key = key_at(p, k);
+        while (*key != k) {
+            uint16_t j = *key, id = visible[k];
+            uint16_t *kj = key_at(p, j);
+            visible[k] = visible[j];
+            visible[j] = id;
+            *key = *kj;
+            *kj = j;
+        }
+    }
+}
+
+zl_status zl_frame_plan(zl_frame *f)
+{
+    layout l;
+    uint8_t *base = (uint8_t *)(void *)f->meshes;
+    uint32_t running = 0, start = 0, peak = 0, slot, visible;
+    uint16_t h = f->cfg.height, j;
+    size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));
+    plan_pass p;
+    if (!zl_frame_layout(&f->cfg, &l)) /* cannot fail: zl_frame_begin checked the configuration */
+        return ZL_ERR_ARG;
+    /* Until the first row the pool (after the difference array), the
+     * Gouraud records and everything from the texture planes to the colour
+     * bands are free: room for the first rows of the visible primitives,
+     * which then need no second classification. */
+    p.diff = (int32_t *)(void *)f->pool;
+    p.key_a = (uint16_t *)(void *)(base + l.pool + diff_bytes);
+    p.na = l.ext - l.pool > diff_bytes ? (uint32_t)((l.ext - l.pool - diff_bytes) / sizeof(uint16_t)) : 0;
+    p.key_b = (uint16_t *)(void *)(base + l.tex);
+    p.nb = (uint32_t)((l.total - l.tex) / sizeof(uint16_t));
+    fill_cache(f);
+    memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
+    memset(p.diff, 0, ((size_t)h + 1) * sizeof(int32_t));
+    visible = classify_pass(f, &p);
+    f->needs.triangles = visible;
+    for (j = 0; j < h; j++) {
+        running += (uint32_t)p.diff[j];
+        if (running > peak)
+            peak = running;
+    }
+    f->needs.active = peak;
+    if (f->needs.triangles > f->cfg.max_triangles || f->needs.active > f->cfg.max_active)
+        return ZL_ERR_CAPACITY;
+    /* Counts -> bucket starts; placing advances each to its bucket's end. */
+    for (j = 0; j <= h; j++) {
+        uint16_t n = f->row_start[j];
+        f->row_start[j] = (uint16_t)start;
+        start += n;
+    }
+    if (visible <= p.na + p.nb) {
+        place_by_keys(f, &p, visible);
+    } else { /* the keys did not fit: classify again */
+        p.diff = NULL;
+        classify_pass(f, &p);
+    }
+    /* The pool's free list: every record, in order. */
+    for (slot = 0; slot < f->cfg.max_active; slot++)
+        f->pool[slot].next = (uint16_t)(slot + 1u < f->cfg.max_active ? slot + 1u : ZL_LIST_END);
+    f->free_head = 0;
+    f->active_head = ZL_LIST_END;
+    return ZL_OK;
+}

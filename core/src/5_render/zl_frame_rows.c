@@ -1,0 +1,477 @@
+#include <string.h>
+
+#include "zl_frame_internal.h"
+
+static uint8_t mesh_of_id(const zl_frame *f, uint16_t id)
+{
+    uint8_t mi = 0;
+    while (mi + 1 < f->mesh_count && id >= f->meshes[mi + 1].tri_base)
+        mi++;
+    return mi;
+}
+
+static zl_gouraud *gouraud_of(const zl_frame *f, uint16_t slot)
+{
+    return f->gouraud ? (zl_gouraud *)(void *)(f->gouraud + (size_t)slot * sizeof(zl_gouraud)) : NULL;
+}
+
+static zl_texplanes *tex_of(const zl_frame *f, uint16_t slot)
+{
+    return f->tex ? (zl_texplanes *)(void *)(f->tex + (size_t)slot * sizeof(zl_texplanes)) : NULL;
+}
+
+/* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
+ * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
+ * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
+ * frame mode's draw_cached does (poly: the caller's scratch polygon).
+ * Returns 0 when it has no rows (never). */
+static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t,
+                                         const zl_cached_vertex *const *c, zl_active *a, zl_poly *poly)
+{
+    if (!zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
+        return 0;
+    poly->n = 0; /* flat: no vertex colours for the lighting to scale */
+    zl_tri_shade(s, t, poly);
+    a->rgb[0] = poly->flat.r;
+    a->rgb[1] = poly->flat.g;
+    a->rgb[2] = poly->flat.b;
+    a->light = poly->light;
+    return 1;
+}
+
+/* Triangle t of mesh record mi, a MESH_FLAT mesh, when its three vertices
+ * are cached inside: set up by setup_cached and inserted at *link. Returns
+ * 0, having done nothing, when a vertex needs clipping (or is dropped):
+ * then the general path takes the triangle. */
+static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_source *s, uint32_t t, uint16_t *link,
+                                            zl_poly *poly)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    const uint16_t *idx = m->mesh.indices + t * 3u;
+    const zl_cached_vertex *c[3];
+    uint16_t slot = f->free_head, i0 = idx[0], i1 = idx[1], i2 = idx[2];
+    zl_active *a;
+    c[0] = s->cache + i0;
+    c[1] = s->cache + i1;
+    c[2] = s->cache + i2;
+    if (c[0]->x <= ZL_CACHE_INVALID || c[1]->x <= ZL_CACHE_INVALID || c[2]->x <= ZL_CACHE_INVALID)
+        return 0;
+    if (slot == ZL_LIST_END)
+        return 1; /* cannot happen: planning bounded the peak */
+    a = &f->pool[slot];
+    if (!setup_cached(m, s, t, c, a, poly))
+        return 1;
+    f->free_head = a->next;
+    a->id = (uint16_t)(m->tri_base + t);
+    a->mesh = mi;
+    a->next = *link;
+    *link = slot;
+    return 1;
+}
+
+/* Set up the pieces of triangle `id` and insert them, in order, at *link
+ * (where the render walk of the active list has reached the first record
+ * with a greater id). */
+static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
+{
+    uint8_t mi = mesh_of_id(f, id);
+    const zl_frame_mesh *m = &f->meshes[mi];
+    const zl_style *sty = style_of(f, mi);
+    int lines = sty != NULL && ext_of(f, mi)->is_lines;
+    uint32_t t = id - m->tri_base;
+    zl_source s;
+    zl_tpoly tpoly; /* texture attributes only when the style needs them */
+    zl_poly *poly = &tpoly.p;
+    unsigned k, n = 1;
+    source_of(f, m, &s);
+    if (!lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly))
+        return;
+    if (!lines) {
+        if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
+                                         : zl_tri_polygon_geom(&s, sty, t, poly)))
+            return;
+        zl_tri_shade(&s, t, poly);
+        n = zl_tri_pieces(&s, sty, t, poly);
+    }
+    for (k = 0; k < n; k++) {
+        uint16_t slot = f->free_head;
+        zl_active *a;
+        if (slot == ZL_LIST_END)
+            break; /* cannot happen: planning bounded the peak */
+        a = &f->pool[slot];
+        if (lines ? !prim_record(f, mi, &s, t, a)
+                  : !zl_tri_piece(&s, sty, t, poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
+            continue;
+        f->free_head = a->next;
+        a->id = id;
+        a->mesh = mi;
+        a->next = *link;
+        *link = slot;
+        link = &a->next;
+    }
+}
+
+/* Return the record at *link, which has no rows left, to the free list. */
+static void retire(zl_frame *f, uint16_t *link, zl_active *a, uint16_t slot)
+{
+    *link = a->next;
+    a->next = f->free_head;
+    f->free_head = slot;
+}
+
+/* Row y: one walk of the active list (sorted by id) fills every record's
+ * span in id order; the triangles starting on this row (visible[i .. end))
+ * are set up and inserted as the walk passes their place, so they need no
+ * walk of their own. Setting up writes no pixel, so the order of the spans,
+ * and hence every pixel, is as if all were activated first; a finished
+ * record is freed before later ones are set up, which only lowers the peak. */
+static ZL_NOINLINE void render_row_styled(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                          uint16_t *zrow)
+{
+    uint16_t *link = &f->active_head;
+    for (;;) {
+        uint16_t slot = *link;
+        zl_active *a;
+        const zl_style *sty;
+        const zl_span_state *ss;
+        int more;
+        if (i < end && (slot == ZL_LIST_END || f->pool[slot].id > f->visible[i])) {
+            activate(f, f->visible[i++], link);
+            continue;
+        }
+        if (slot == ZL_LIST_END)
+            break;
+        a = &f->pool[slot];
+        if (a->row != y) { /* a later piece of a clipped triangle: not started */
+            link = &a->next;
+            continue;
+        }
+        sty = style_of(f, a->mesh);
+        ss = &f->meshes[a->mesh].span;
+        if (a->kind != ZL_KIND_TRI)
+            more = zl_prim_row(a, ss, crow, zrow);
+        else if (f->tex != NULL && zl_style_needs_planes(sty))
+            more = zl_tri_row_ex(a, gouraud_of(f, slot), tex_of(f, slot), sty, ss, crow, zrow);
+        else
+            more = zl_tri_row(a, gouraud_of(f, slot), ss, crow, zrow);
+        if (more)
+            link = &a->next;
+        else
+            retire(f, link, a, slot);
+    }
+}
+
+/* activate() without style records: a filled triangle, no texture planes. */
+static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
+{
+    uint8_t mi = mesh_of_id(f, id);
+    const zl_frame_mesh *m = &f->meshes[mi];
+    uint32_t t = id - m->tri_base;
+    zl_source s;
+    zl_poly poly;
+    unsigned k, n;
+    source_of(f, m, &s);
+    if ((m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, &poly))
+        return;
+    if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
+        return;
+    zl_tri_shade(&s, t, &poly);
+    n = zl_tri_pieces(&s, NULL, t, &poly);
+    for (k = 0; k < n; k++) {
+        uint16_t slot = f->free_head;
+        zl_active *a;
+        if (slot == ZL_LIST_END)
+            break; /* cannot happen: planning bounded the peak */
+        a = &f->pool[slot];
+        if (!zl_tri_piece(&s, NULL, t, &poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
+            continue;
+        f->free_head = a->next;
+        a->id = id;
+        a->mesh = mi;
+        a->next = *link;
+        *link = slot;
+        link = &a->next;
+    }
+}
+
+/* zl_raster.c's edge_step. */
+static ZL_ALWAYS_INLINE void edge_step(zl_edge *e)
+{
+    e->x += e->step;
+    e->rem -= e->rstep;
+    if (e->rem < 0) {
+        e->rem += e->den;
+        e->x += 1;
+    }
+}
+
+/* The depth plane at column x0 when its gradient needs more than 32 bits
+ * (rare: out of line, so the common case stays one multiply-accumulate). */
+static ZL_NOINLINE int64_t plane_wide(const zl_active *a, int32_t x0)
+{
+    return a->z.row + (int64_t)(x0 - a->ax) * a->z.dx;
+}
+
+/* Spans up to this many pixels are written in place by span_565; longer ones
+ * go to zl_span_flat (zl_raster.c's ZL_SHORT_SPAN). */
+#define SHORT_SPAN 6
+
+/*
+ * row_span of a flat triangle record of a MESH_ROW565 mesh, columns
+ * [x0, x1) (clipped to the row, x0 < x1) of the band's row buffers (both
+ * present, 2-byte aligned), depth test `func` (ZL_LESS or ZL_LEQUAL, a
+ * constant at each call): depth_start's clamped plane value, with the clamp
+ * after the shift (floor division is monotone, so clamping to [zlo 16,
+ * zhi 16] and then shifting equals shifting and then clamping to [zlo / 4,
+ * zhi / 4]); a short span pixel by pixel as zl_span_flat writes it.
+ */
+static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *ss, unsigned func, uint8_t *crow,
+                                      uint16_t *zrow, int32_t x0, int32_t x1)
+{
+    int32_t n = x1 - x0, k;
+    int64_t v, w;
+    uint32_t z, dz = a->dz14, lo14 = a->zlo >> 2, hi14 = a->zhi >> 2;
+    int32_t dx32 = (int32_t)a->z.dx; /* kept only when it is the whole gradient */
+    uint16_t pixel = (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
+                                (unsigned)(a->rgb[2] >> 3));
+    uint16_t *c, *zb;
+    if (a->z.dx == (int64_t)dx32) /* a 32-bit gradient: one multiply-accumulate */
+        v = a->z.row + (int64_t)dx32 * (x0 - a->ax);
+    else
+        v = plane_wide(a, x0);
+    w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
+    z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
+    z = (z < lo14 ? lo14 : z) + (1u << 13);
+    if (n > SHORT_SPAN) {
+        uint8_t pix[3];
+        memcpy(pix, &pixel, 2); /* pack_color's native RGB565 */
+        pix[2] = 0;
+        zl_span_flat(ss, crow + (size_t)x0 * 2u, zrow + x0, n, z, dz, pix);
+        return;
+    }
+    c = (uint16_t *)(void *)crow + x0;
+    zb = zrow + x0;
+    for (k = 0; k < n; k++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zb[k])) {
+            zb[k] = (uint16_t)d;
+            c[k] = pixel;
+        }
+        z += dz;
+    }
+}
+
+/* zl_tri_row's steps after the span: 0 when the record has no rows left. */
+static ZL_ALWAYS_INLINE int row_step(zl_active *a)
+{
+    int32_t row = a->row + 1;
+    edge_step(&a->left);
+    edge_step(&a->right);
+    a->z.row += a->z.dy;
+    a->row = (int16_t)row;
+    if (row >= a->end)
+        return 0;
+    if (row == a->mid) {
+        if (a->lower_is_left)
+            a->left = a->lower;
+        else
+            a->right = a->lower;
+    }
+    return 1;
+}
+
+/*
+ * render_row_plain() when every mesh is MESH_ROW565 with depth test `func`
+ * (then all their span states are the same): the walk with each record's
+ * span and steps in line.
+ */
+static ZL_ALWAYS_INLINE void rows_565(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                      uint16_t *zrow, unsigned func)
+{
+    uint16_t *link = &f->active_head;
+    zl_active *pool = f->pool;
+    const uint16_t *visible = f->visible;
+    const zl_span_state *ss = &f->meshes[0].span;
+    for (;;) {
+        uint16_t slot = *link;
+        zl_active *a;
+        int32_t x0, x1;
+        if (i < end && (slot == ZL_LIST_END || pool[slot].id > visible[i])) {
+            activate_plain(f, visible[i++], link);
+            continue;
+        }
+        if (slot == ZL_LIST_END)
+            break;
+        a = &pool[slot];
+        if (a->row != y) { /* a later piece of a clipped triangle, not started */
+            link = &a->next;
+            continue;
+        }
+        x0 = a->left.x < 0 ? 0 : a->left.x;
+        x1 = a->right.x > ss->width ? ss->width : a->right.x;
+        if (x0 < x1)
+            span_565(a, ss, func, crow, zrow, x0, x1);
+        if (row_step(a))
+            link = &a->next;
+        else
+            retire(f, link, a, slot);
+    }
+}
+
+static ZL_NOINLINE void render_row_less(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                        uint16_t *zrow)
+{
+    rows_565(f, y, i, end, crow, zrow, ZL_LESS);
+}
+
+static ZL_NOINLINE void render_row_lequal(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                          uint16_t *zrow)
+{
+    rows_565(f, y, i, end, crow, zrow, ZL_LEQUAL);
+}
+
+/* render_row_styled() without style records: every record is a filled
+ * triangle without texture planes (add_record refuses anything else). */
+static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                         uint16_t *zrow)
+{
+    uint16_t *link = &f->active_head;
+    zl_active *pool = f->pool;
+    const uint16_t *visible = f->visible;
+    const zl_frame_mesh *meshes = f->meshes;
+    zl_gouraud *gouraud = (zl_gouraud *)(void *)f->gouraud;
+    for (;;) {
+        uint16_t slot = *link;
+        zl_active *a;
+        const zl_frame_mesh *m;
+        int more;
+        if (i < end && (slot == ZL_LIST_END || pool[slot].id > visible[i])) {
+            activate_plain(f, visible[i++], link);
+            continue;
+        }
+        if (slot == ZL_LIST_END)
+            break;
+        a = &pool[slot];
+        if (a->row != y) { /* a later piece of a clipped triangle, not started */
+            link = &a->next;
+            continue;
+        }
+        m = &meshes[a->mesh];
+        if (m->flags & MESH_ROW565) {
+            int32_t x0 = a->left.x < 0 ? 0 : a->left.x, x1 = a->right.x > m->span.width ? m->span.width : a->right.x;
+            if (x0 < x1) {
+                if (m->span.func == ZL_LESS)
+                    span_565(a, &m->span, ZL_LESS, crow, zrow, x0, x1);
+                else
+                    span_565(a, &m->span, ZL_LEQUAL, crow, zrow, x0, x1);
+            }
+            more = row_step(a);
+        } else {
+            more = zl_tri_row(a, gouraud != NULL ? gouraud + slot : NULL, &m->span, crow, zrow);
+        }
+        if (more)
+            link = &a->next;
+        else
+            retire(f, link, a, slot);
+    }
+}
+
+static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+{
+    uint16_t i = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y];
+    unsigned mi, flags = 0, func = 0;
+    if (f->ext != NULL) {
+        render_row_styled(f, y, i, end, crow, zrow);
+        return;
+    }
+    /* Every mesh MESH_ROW565 with the same depth test: the walk in line. */
+    if (f->mesh_count != 0) {
+        flags = MESH_ROW565;
+        func = f->meshes[0].span.func;
+    }
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        flags &= f->meshes[mi].flags;
+        if (f->meshes[mi].span.func != func)
+            flags = 0;
+    }
+    if (flags == 0)
+        render_row_plain(f, y, i, end, crow, zrow);
+    else if (func == ZL_LESS)
+        render_row_less(f, y, i, end, crow, zrow);
+    else
+        render_row_lequal(f, y, i, end, crow, zrow);
+}
+
+zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
+{
+    uint16_t rows, r, w;
+    size_t bpp;
+    uint8_t *color;
+    uint8_t pix[3] = {0, 0, 0};
+    uint16_t pix16;
+    if (f == NULL || band == NULL)
+        return ZL_ERR_ARG;
+    if (!f->planned) {
+        zl_status st = zl_frame_plan(f);
+        if (st != ZL_OK)
+            return st;
+        f->planned = 1;
+    }
+    if (f->next_row >= f->cfg.height)
+        return ZL_DONE;
+    w = f->cfg.width;
+    bpp = zl_format_bytes((zl_format)f->cfg.format);
+    rows = (uint16_t)(f->cfg.height - f->next_row);
+    if (rows > f->cfg.band_rows)
+        rows = f->cfg.band_rows;
+    color = f->color_band[f->band_index];
+    /* The clear colour in the band's format, every channel written (what
+     * zl_fill_color_row does with the default state's span settings). */
+    pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
+    memcpy(&pix16, pix, 2);
+    for (r = 0; r < rows; r++) {
+        uint8_t *crow = color + (size_t)r * w * bpp;
+        uint16_t *zrow = f->depth_band + (size_t)r * w;
+        if (bpp == 2) { /* rows of an 8-byte aligned band, an even number of bytes apart */
+            zl_fill16((uint16_t *)(void *)crow, pix16, w);
+        } else {
+            uint16_t i;
+            for (i = 0; i < w; i++)
+                memcpy(crow + (size_t)i * 3u, pix, 3);
+        }
+        zl_fill16(zrow, f->clear_depth, w);
+        render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
+    }
+    band->first_row = f->next_row;
+    band->rows = rows;
+    band->width = w;
+    band->format = f->cfg.format;
+    band->color = color;
+    band->color_stride = (int32_t)(w * bpp);
+    band->depth = f->depth_band;
+    band->depth_stride = (int32_t)w * 2;
+    f->next_row = (uint16_t)(f->next_row + rows);
+    if (f->cfg.color_buffers == 2)
+        f->band_index ^= 1u;
+    return ZL_OK;
+}
+
+int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user)
+{
+    zl_band band;
+    zl_status st;
+    if (fn == NULL)
+        return ZL_ERR_ARG;
+    while ((st = zl_frame_next_band(f, &band)) == ZL_OK) {
+        int r = fn(user, &band);
+        if (r != 0)
+            return r;
+    }
+    return st == ZL_DONE ? 0 : st;
+}
+
+zl_frame_needs_t zl_frame_needs(const zl_frame *f)
+{
+    zl_frame_needs_t none = {0, 0};
+    return f ? f->needs : none;
+}
