@@ -1,4 +1,5 @@
-/* Fixed-point helpers: checked arithmetic, integer square roots, sine table. */
+/* Stage 1, base: fixed-point helpers (checked arithmetic, integer square
+ * roots, the sine table) that every later stage uses. */
 #include <stddef.h>
 
 #include "zline/zl_fixed.h"

@@ -1,7 +1,7 @@
 /*
- * zline internals shared by the immediate (frame) mode and the scanline/band
- * mode. Both modes run every triangle through the same three stages, which is
- * why their pixels are identical:
+ * Stage 1, base: the zline internals shared by every stage. The immediate
+ * (frame) mode and the scanline/band mode (stage 5) run every triangle through
+ * the same three functions, which is why their pixels are identical:
  *
  *   zl_tri_polygon   fetch/transform the vertices, clip if needed, project and
  *                    snap: a convex polygon in window space (3..9 vertices)
@@ -214,7 +214,7 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #define ZL_ALWAYS_INLINE inline
 #endif
 
-/* ---- zl_clip.c */
+/* ---- stage 2, geometry: 2_geometry/zl_vertex.c, zl_light.c, zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour
  * included). Returns 0 if the transform leaves its range. */
 int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out);
@@ -252,7 +252,8 @@ void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32
  * zl_tri_shade_lit and pack_color give for a flat triangle. */
 uint16_t zl_tri_pixel565_lit(const zl_source *s, uint32_t t, const int32_t lq[3]);
 
-/* ---- zl_raster.c */
+/* ---- stage 3, raster: 3_raster/zl_setup.c, zl_setup_fast.c, zl_rows.c,
+ * zl_rows_styled.c (and 4_primitives/zl_line_rows.c for zl_prim_row) */
 /* Cull and bound fan triangle (a, b, c). Returns 1 and the row range
  * [*first, *end) when it may cover pixels of the width x height target. */
 int zl_tri_classify(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_state *st,
@@ -336,7 +337,7 @@ void zl_tri_apply_offset(zl_active *t, int64_t offset);
  * step it; returns 0 when it has no rows left. */
 int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row);
 
-/* ---- zl_line.c */
+/* ---- stage 4, primitives: 4_primitives/zl_line.c */
 /* Window-space endpoint of a line or point, with its clipping flag. */
 typedef struct {
     int32_t x, y;   /* subpixels */
@@ -380,7 +381,7 @@ unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, co
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
                  zl_active *t, zl_gouraud *g, zl_texplanes *tp);
 
-/* ---- zl_outline.c */
+/* ---- stage 4, primitives: 4_primitives/zl_outline.c */
 /* Is edge e of the outline drawn (silhouette, crease or border)? */
 int zl_outline_selected(const zl_source *s, const zl_mesh *mesh, const zl_outline *o, const zl_mesh_edge *e);
 /* Line record of edge k of an outline of `mesh` (s->mesh may be a view with
@@ -389,14 +390,16 @@ int zl_outline_record(const zl_source *s, const zl_mesh *mesh, const zl_outline 
                       uint32_t k, zl_active *out);
 zl_status zl_check_outline(const zl_mesh *mesh, const zl_outline *o);
 
-/* ---- zl_draw.c */
+/* ---- stage 1, base: 1_base/zl_state.c, argument checks */
 zl_status zl_check_mesh(const zl_mesh *m, int pixel_space);
-/* ---- zl_matrix.c: zl_check_mesh, then the transform limits of zline.h
+/* ---- stage 2: 2_geometry/zl_matrix.c: zl_check_mesh, then the transform limits of zline.h
  * (LIMITS) when mvp is given; ZL_ERR_RANGE before anything is drawn. */
 zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp);
 /* The same limits for bare positions (lines and points). */
 zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp);
+/* ---- stage 1, base: 1_base/zl_state.c */
 zl_status zl_check_lines(const zl_lines *l);
+/* ---- stage 4, primitives: 4_primitives/zl_line.c: a mesh view of lines */
 void zl_lines_mesh(const zl_lines *l, zl_mesh *m);
 
 #endif /* ZLINE_INTERNAL_H */

@@ -1,4 +1,5 @@
-/* Pseudodepth: the distance -> depth mapping and its precision, in integers. */
+/* Stage 2, geometry: pseudodepth, the distance -> depth mapping and its
+ * precision, in integers. */
 #include "zline/zline.h"
 
 /* Number of significant bits of v. */

@@ -1,4 +1,5 @@
-/* 4x4 matrices in Q16.16: building, multiplying and applying them. */
+/* Stage 2, geometry: 4x4 matrices in Q16.16 (building, multiplying and
+ * applying them) and the transform limits of a mesh (zl_check_geometry). */
 #include "../1_base/zl_internal.h"
 
 #define M(r, c) m[(r) * 4 + (c)]

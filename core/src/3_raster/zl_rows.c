@@ -1,4 +1,9 @@
-/* placeholder */
+/*
+ * Stage 3, raster: rows of flat and Gouraud triangles. The span of a set-up
+ * triangle on the current row and the step to the next (zl_tri_row), all rows
+ * of a flat RGB565 triangle at once (zl_tri_rows_flat), and the small
+ * triangles of frame mode drawn row by row without a record (zl_tiny_draw).
+ */
 #include <string.h>
 
 #include "zl_raster.h"

@@ -1,4 +1,8 @@
-/* placeholder */
+/*
+ * Stage 3, raster: rows of styled triangles (zl_tri_row_ex): textures,
+ * affine or perspective-correct, perspective-correct Gouraud, and the
+ * texel fetch with its wrap rule.
+ */
 #include <string.h>
 
 #include "zl_raster.h"

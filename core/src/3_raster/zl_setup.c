@@ -1,6 +1,7 @@
 /*
- * Triangle scan conversion: classify (cull, row range), setup (edge steppers
- * and attribute planes), and per-row span generation and fill.
+ * Stage 3, raster: triangle set-up. Classify (cull, row range) and set up
+ * (exact edge steppers and attribute planes) a window-space triangle, and the
+ * polygon offset. Rows and spans are in zl_rows.c and zl_span.c.
  *
  * Coverage is decided exactly: at row j (centre y = 16 j + 8 subpixels) an
  * edge from (xt, yt) down to (xb, yb) crosses at

@@ -1,4 +1,5 @@
-/* Span fill (see zl_span.h): the loops every flat and Gouraud pixel runs. */
+/* Stage 3, raster: span fill (see zl_span.h), the loops every flat and
+ * Gouraud pixel runs, and the clears. */
 #include "zl_span.h"
 
 void zl_span_state_init(zl_span_state *ss, const zl_state *st, int has_depth, int has_color,

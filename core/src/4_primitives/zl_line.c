@@ -1,5 +1,5 @@
 /*
- * Lines and points (the LINE RULE of zline.h), the style, and the pieces a
+ * Stage 4, primitives: lines and points (the LINE RULE of zline.h), the style, and the pieces a
  * triangle becomes under the polygon modes.
  *
  * A segment is set up once into an active record that is then walked row by

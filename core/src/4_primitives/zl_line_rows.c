@@ -1,3 +1,8 @@
+/*
+ * Stage 4, primitives: the rows of lines and points (the LINE RULE of
+ * zline.h): one record per segment stepped along its major axis, depth
+ * tested and written per pixel, and the anti-aliased coverage blend.
+ */
 #include <string.h>
 
 #include "../3_raster/zl_raster.h"

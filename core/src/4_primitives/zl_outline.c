@@ -1,5 +1,5 @@
 /*
- * Outlines: the edge list of a mesh (adjacency), and the silhouette, crease
+ * Stage 4, primitives: outlines: the edge list of a mesh (adjacency), and the silhouette, crease
  * and border edges of it drawn as depth-tested lines (the LINE RULE).
  *
  * Facing comes from the homogeneous orientation of the triangle's clip-space

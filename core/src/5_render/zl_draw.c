@@ -1,4 +1,5 @@
-/* Immediate (frame) mode: draw meshes straight into a full target. */
+/* Stage 5, render: immediate (frame) mode, meshes, lines and outlines drawn
+ * straight into a full target, with the fast path of the cached flat draw. */
 #include <string.h>
 
 #include "../1_base/zl_internal.h"

@@ -1,5 +1,8 @@
 /*
- * Scanline and band mode: the whole frame a band of rows at a time.
+ * Stage 5, render: scanline and band mode, the whole frame a band of rows at
+ * a time. This file: the work-buffer layout and the submission of meshes,
+ * lines and outlines; planning is in zl_frame_plan.c, rows in
+ * zl_frame_rows.c.
  *
  * Planning (first zl_frame_next_band):
  *   1. every vertex is transformed once into the vertex cache (a mesh with a

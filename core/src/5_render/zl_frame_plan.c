@@ -1,3 +1,9 @@
+/*
+ * Stage 5, render: planning of scanline and band mode (the first band): fill
+ * the vertex cache, classify every triangle once, bound the active set with
+ * a difference array, and bucket the visible triangles by first row (the
+ * edge table). See zl_frame.c for the whole scheme.
+ */
 #include <string.h>
 
 #include "zl_frame_internal.h"

@@ -1,3 +1,9 @@
+/*
+ * Stage 5, render: the rows of scanline and band mode. Each row walks the
+ * active list (sorted by id, so submission order holds), activates the
+ * bucket's triangles as it passes their place, fills and steps every active
+ * triangle, and retires those past their last row.
+ */
 #include <string.h>
 
 #include "zl_frame_internal.h"

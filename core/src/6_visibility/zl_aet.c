@@ -1,5 +1,5 @@
 /*
- * Scan-line hidden-surface removal with an extended active edge table: no
+ * Stage 6, visibility: scan-line hidden-surface removal with an extended active edge table: no
  * depth buffer, one row of output at a time.
  *
  * Polygon table: every kept triangle piece is set up by zl_tri_setup when

@@ -1,5 +1,5 @@
 /*
- * Drawing a BSP tree without a depth buffer.
+ * Stage 6, visibility: drawing a BSP tree without a depth buffer.
  *
  * The tree (built offline by tools/bsp, stored as const arrays) partitions
  * the mesh by planes: each node holds the triangles lying in its plane, a

@@ -1,5 +1,5 @@
 /*
- * The two back-face tests of the lecture.
+ * Stage 6, visibility: the two back-face tests of the lecture.
  *
  * Viewpoint culling (before projection): the triangle's plane in model space
  * n . p = n . p0 with n = (p1 - p0) x (p2 - p0); the eye sees the side n

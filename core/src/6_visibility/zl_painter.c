@@ -1,5 +1,5 @@
 /*
- * Painter's algorithm: sort by depth, draw far to near with no depth buffer.
+ * Stage 6, visibility: painter's algorithm: sort by depth, draw far to near with no depth buffer.
  *
  * Key: the window depth of the triangle's farthest vertex (after clipping),
  * the classic first step of Newell, Newell and Sancha. Far first; equal keys

@@ -1,5 +1,5 @@
 /*
- * The reference ray caster: for every pixel centre, the nearest triangle
+ * Stage 6, visibility: the reference ray caster: for every pixel centre, the nearest triangle
  * along the view ray.
  *
  * After the projective transform a view ray through a pixel centre is the

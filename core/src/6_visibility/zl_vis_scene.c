@@ -1,5 +1,5 @@
 /*
- * The scene of the visibility methods: work-buffer layout, mesh submission,
+ * Stage 6, visibility: the scene of the visibility methods: work-buffer layout, mesh submission,
  * planning, and the helpers the methods share.
  *
  * Planning follows zl_frame: every vertex is transformed once into the
