@@ -1,0 +1,84 @@
+/* The OLED demo's animation: see oled_scene.h. */
+#include "oled_scene.h"
+
+#include "bunny_mesh.h"
+
+/* Worst case over the animation's angles, from zl_frame_needs() on the host
+ * (host/oled_reference.c prints it): the firmware and the reference fail
+ * with ZL_ERR_CAPACITY, never draw wrongly, if a change of scene needs more. */
+#define OLED_SCENE_MAX_ACTIVE 128
+#define OLED_SCENE_MAX_TRIANGLES 2048
+
+void oled_scene_config(zl_frame_config *cfg)
+{
+    zl_frame_config c = {0};
+    c.width = OLED_SCENE_W;
+    c.height = OLED_SCENE_H;
+    c.band_rows = 1; /* scanline mode */
+    c.format = ZL_FORMAT_RGB565;
+    c.color_buffers = 1;
+    c.max_meshes = 1;
+    c.max_vertices = bunny_mesh.vertex_count;
+    c.max_triangles = OLED_SCENE_MAX_TRIANGLES;
+    c.max_active = OLED_SCENE_MAX_ACTIVE;
+    *cfg = c;
+}
+
+/* Model turned by `index` steps about y, seen from (0, 0.3, 3.2) looking at
+ * the origin: the bunny fills most of the panel's height. */
+static int scene_mvp(zl_mat4 *mvp, int index)
+{
+    zl_mat4 proj, view, model, pv;
+    zl_vec3 eye = {0, ZL_FX_ONE * 3 / 10, ZL_FX_ONE * 32 / 10};
+    zl_vec3 target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
+    int degrees = (index % OLED_SCENE_FRAMES) * OLED_SCENE_DEGREES_PER_FRAME;
+    if (zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(45)), ZL_FX_INT(OLED_SCENE_W) / OLED_SCENE_H,
+                            ZL_FX_ONE / 10, ZL_FX_INT(100)) != ZL_OK ||
+        zl_mat4_look_at(&view, eye, target, up) != ZL_OK)
+        return -1;
+    zl_mat4_rotate_y(&model, zl_angle_from_deg(ZL_FX_INT(degrees)));
+    zl_mat4_mul(&pv, &proj, &view);
+    zl_mat4_mul(mvp, &pv, &model);
+    return 0;
+}
+
+static void scene_state(zl_state *st)
+{
+    zl_state_default(st);
+    st->cull = ZL_CULL_BACK;
+    st->light_on = 1;
+    st->ambient = 80;
+    st->color.r = 230;
+    st->color.g = 200;
+    st->color.b = 160;
+    st->light_dir.x = 24576;
+    st->light_dir.y = 32768;
+    st->light_dir.z = 49152;
+}
+
+int oled_scene_render(int index, void *work, size_t work_bytes, zl_band_fn row_fn, void *user,
+                      zl_frame_needs_t *needs)
+{
+    /* A dark blue-grey background (grey level 2, not 0): a row or window
+     * written in the wrong place shows against it. */
+    static const zl_rgb background = {30, 40, 60};
+    zl_frame_config cfg;
+    zl_frame frame;
+    zl_mat4 mvp;
+    zl_state st;
+    zl_status s;
+    int r;
+    oled_scene_config(&cfg);
+    if (scene_mvp(&mvp, index) != 0)
+        return ZL_ERR_ARG;
+    scene_state(&st);
+    s = zl_frame_begin(&frame, &cfg, work, work_bytes, background, 65535);
+    if (s == ZL_OK)
+        s = zl_frame_add_mesh(&frame, &bunny_mesh, &mvp, &st);
+    if (s != ZL_OK)
+        return s;
+    r = zl_frame_render(&frame, row_fn, user);
+    if (needs != NULL)
+        *needs = zl_frame_needs(&frame);
+    return r;
+}
