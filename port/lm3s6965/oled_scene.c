@@ -42,18 +42,28 @@ static int scene_mvp(zl_mat4 *mvp, int index)
     return 0;
 }
 
-static void scene_state(zl_state *st)
+/* Lighting is in model space: turn the light against the model so that it
+ * stays fixed in the world, above and in front, left of the viewer. */
+static int scene_state(zl_state *st, int index)
 {
+    zl_vec3 towards_light = {24576, 32768, 49152}; /* (0.375, 0.5, 0.75): about unit length */
+    zl_mat4 unturn;
+    zl_vec4 l;
+    int degrees = (index % OLED_SCENE_FRAMES) * OLED_SCENE_DEGREES_PER_FRAME;
+    zl_mat4_rotate_y(&unturn, zl_angle_from_deg(ZL_FX_INT(-degrees)));
+    if (zl_transform_point(&unturn, towards_light, &l) != ZL_OK)
+        return -1;
     zl_state_default(st);
     st->cull = ZL_CULL_BACK;
     st->light_on = 1;
-    st->ambient = 80;
+    st->ambient = 60;
     st->color.r = 230;
     st->color.g = 200;
     st->color.b = 160;
-    st->light_dir.x = 24576;
-    st->light_dir.y = 32768;
-    st->light_dir.z = 49152;
+    st->light_dir.x = l.x;
+    st->light_dir.y = l.y;
+    st->light_dir.z = l.z;
+    return 0;
 }
 
 int oled_scene_render(int index, void *work, size_t work_bytes, zl_band_fn row_fn, void *user,
@@ -69,9 +79,8 @@ int oled_scene_render(int index, void *work, size_t work_bytes, zl_band_fn row_f
     zl_status s;
     int r;
     oled_scene_config(&cfg);
-    if (scene_mvp(&mvp, index) != 0)
+    if (scene_mvp(&mvp, index) != 0 || scene_state(&st, index) != 0)
         return ZL_ERR_ARG;
-    scene_state(&st);
     s = zl_frame_begin(&frame, &cfg, work, work_bytes, background, 65535);
     if (s == ZL_OK)
         s = zl_frame_add_mesh(&frame, &bunny_mesh, &mvp, &st);
