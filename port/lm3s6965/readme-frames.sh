@@ -29,9 +29,11 @@ python3 "$top/port/lm3s6965/oled_test.py" --elf "$build/port/lm3s6965/oled_demo.
 images=$top/docs/images
 mkdir -p "$images"
 # -delay is in 1/100 s: 8 frames per second, looping.
-convert -delay 12 -loop 0 "$run"/captures/frame-*.pgm -filter point -resize 300% "$images/oled-bunny.gif"
+convert -delay 12 -loop 0 "$run"/captures/frame-*.pgm -filter point -resize 300% -strip "$images/oled-bunny.gif"
 convert "$run"/captures/frame-00.pgm "$run"/captures/frame-04.pgm "$run"/captures/frame-08.pgm \
     "$run"/captures/frame-12.pgm "$run"/captures/frame-16.pgm "$run"/captures/frame-20.pgm \
-    -bordercolor white -border 2 +append -filter point -resize 200% "$images/oled-strip.png"
+    -bordercolor white -border 2 +append -filter point -resize 200% -strip "$images/oled-strip.png"
 echo "wrote $images/oled-bunny.gif and $images/oled-strip.png from $(ls "$run"/captures/*.pgm | wc -l) QEMU captures"
 grep -v '^frame ' "$out"
+mesh=$(find "$build/port/lm3s6965" -path '*oled_demo.dir*' -name 'bunny_mesh.c.obj' | head -n 1)
+echo "flash used by the bunny's const arrays (arm-none-eabi-size, text): $(arm-none-eabi-size "$mesh" | awk 'NR == 2 { print $1 }') bytes"
