@@ -3,10 +3,11 @@
  * board's 128x64 OLED (SSD0323 over SPI), rendered in scanline mode with
  * everything in the part's 64 KiB of SRAM. Run under QEMU:
  *
- *   qemu-system-arm -M lm3s6965evb -display none -icount shift=5 \
- *     -semihosting-config enable=on,target=native -kernel oled_demo.elf
+ *   qemu-system-arm -M lm3s6965evb -serial none -monitor none -icount shift=5 \
+ *     -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
+ *     -kernel oled_demo.elf
  *
- * (or with a window instead of -display none). After each frame the
+ * (a window shows the OLED; add -display none for none). After each frame the
  * firmware prints "frame N shown" and waits for one character from the
  * host on the semihosting console (press Enter; the CI test sends one after
  * taking a screendump), so every frame can be captured while it is on the

@@ -32,6 +32,7 @@ import shutil
 import socket
 import subprocess
 import sys
+import tempfile
 import time
 
 W, H, MAGNIFY = 128, 64, 4
@@ -192,9 +193,16 @@ def run(args):
         raise Broken("%s not found (apt install qemu-system-arm)" % args.qemu)
 
     deadline = time.monotonic() + args.timeout
-    sock_path = os.path.join(args.dir, "qmp.sock")
-    if os.path.exists(sock_path):
-        os.unlink(sock_path)
+    # A short private directory for the socket: unix socket paths are
+    # limited to about 100 bytes, build directories can be deeper.
+    sock_dir = tempfile.mkdtemp(prefix="zline-oled-")
+    try:
+        return run_qemu(args, deadline, os.path.join(sock_dir, "qmp.sock"))
+    finally:
+        shutil.rmtree(sock_dir, ignore_errors=True)
+
+
+def run_qemu(args, deadline, sock_path):
     cmd = [args.qemu, "-M", "lm3s6965evb", "-display", "none", "-monitor", "none", "-serial", "none",
            "-qmp", "unix:%s,server=on,wait=off" % sock_path,
            "-chardev", "stdio,id=semi", "-semihosting-config", "enable=on,target=native,chardev=semi",
