@@ -8,7 +8,8 @@
  * away from (0, 0) and partial updates that leave the rest untouched, an
  * offset RAM area in a mirrored orientation, scanline and band mode, and
  * both phases of the DMA double buffer (the model's DMA reads a band only
- * when the driver waits for it, so a buffer reused too early shows). The
+ * when the driver waits for it, so a buffer reused too early shows), rows
+ * with padding between them, and bad input that must send nothing. The
  * model itself is checked against a hand-written byte stream first, and a
  * broken handover (DMA with one colour buffer) must make the comparison fail.
  */
@@ -395,6 +396,37 @@ static void test_dma_with_one_colour_buffer_is_caught(void)
     TEST_ASSERT_TRUE(differences(&c, 0, 0, c.width, c.height) > 0);
 }
 
+static void test_padded_rows_are_sent_row_by_row(void)
+{
+    /* A band whose rows have padding between them (stride > width * 2):
+     * the padding must not reach the panel. 3 rows of 4 pixels, stride 12. */
+    static const uint8_t rows[3 * 12] = {
+        0x10, 0x01, 0x10, 0x02, 0x10, 0x03, 0x10, 0x04, 0xEE, 0xEE, 0xEE, 0xEE,
+        0x20, 0x01, 0x20, 0x02, 0x20, 0x03, 0x20, 0x04, 0xEE, 0xEE, 0xEE, 0xEE,
+        0x30, 0x01, 0x30, 0x02, 0x30, 0x03, 0x30, 0x04, 0xEE, 0xEE, 0xEE, 0xEE,
+    };
+    zl_panel_config c = zl_panel_config_st7789_240x240();
+    zl_panel_bus bus = model_bus(1);
+    zl_panel p;
+    zl_band band;
+    int x, y;
+    panel_start(&p, &c, &bus, 0);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_panel_window(&p, 100, 200, 4, 3));
+    memset(&band, 0, sizeof band);
+    band.width = 4;
+    band.rows = 3;
+    band.format = ZL_FORMAT_RGB565_BE;
+    band.color = rows;
+    band.color_stride = 12;
+    TEST_ASSERT_EQUAL_INT(0, zl_panel_send_band(&p, &band));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_panel_finish(&p));
+    assert_model_clean();
+    for (y = 0; y < 3; y++)
+        for (x = 0; x < 4; x++)
+            TEST_ASSERT_EQUAL_HEX16(((y + 1) << 12) | (x + 1), zt_panel_pixel(&model, (uint32_t)(100 + x), (uint32_t)(200 + y)));
+    TEST_ASSERT_EQUAL_UINT32(12, model.pixels);
+}
+
 static void test_bad_input_sends_nothing(void)
 {
     zl_panel_config c = zl_panel_config_st7789_240x240(), bad;
@@ -466,6 +498,7 @@ int main(void)
     RUN_TEST(test_offset_area_in_a_mirrored_orientation);
     RUN_TEST(test_partial_update_leaves_the_rest_untouched);
     RUN_TEST(test_dma_with_one_colour_buffer_is_caught);
+    RUN_TEST(test_padded_rows_are_sent_row_by_row);
     RUN_TEST(test_bad_input_sends_nothing);
     return UNITY_END();
 }

@@ -204,7 +204,6 @@ int zl_panel_send_band(void *panel, const zl_band *band)
     zl_panel *p = panel;
     const uint8_t *row;
     size_t row_bytes;
-    uint16_t r;
     zl_status s = band_check(p, band);
     if (s != ZL_OK)
         return s;
@@ -217,6 +216,7 @@ int zl_panel_send_band(void *panel, const zl_band *band)
         send_pixels(p, row, row_bytes * band->rows);
     } else {
         /* Rows with padding between them: one transfer each, in order. */
+        uint16_t r;
         for (r = 0; r < band->rows; r++) {
             wait_transfer(p);
             send_pixels(p, row + (size_t)r * (size_t)band->color_stride, row_bytes);
