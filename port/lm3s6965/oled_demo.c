@@ -3,7 +3,7 @@
  * board's 128x64 OLED (SSD0323 over SPI), rendered in scanline mode with
  * everything in the part's 64 KiB of SRAM. Run under QEMU:
  *
- *   qemu-system-arm -M lm3s6965evb -serial none -monitor none -icount shift=5 \
+ *   qemu-system-arm -M lm3s6965evb -serial none -monitor none -icount shift=5,sleep=off \
  *     -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
  *     -kernel oled_demo.elf
  *
@@ -12,7 +12,9 @@
  * host on the semihosting console (press Enter; the CI test sends one after
  * taking a screendump), so every frame can be captured while it is on the
  * panel. At the end it prints the RAM map and the instructions per frame
- * (exact under -icount shift=5: see count_instructions) and exits 0.
+ * (exact under -icount shift=5: see ticks_to_instructions; sleep=off keeps
+ * virtual time still while the firmware waits, so runs repeat exactly)
+ * and exits 0.
  */
 #include <stdint.h>
 

@@ -206,7 +206,7 @@ def run_qemu(args, deadline, sock_path):
     cmd = [args.qemu, "-M", "lm3s6965evb", "-display", "none", "-monitor", "none", "-serial", "none",
            "-qmp", "unix:%s,server=on,wait=off" % sock_path,
            "-chardev", "stdio,id=semi", "-semihosting-config", "enable=on,target=native,chardev=semi",
-           "-icount", "shift=5", "-kernel", args.elf]
+           "-icount", "shift=5,sleep=off", "-kernel", args.elf]
     stderr_path = os.path.join(args.dir, "qemu.stderr")
     log = []
     mismatches = []
