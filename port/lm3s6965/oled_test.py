@@ -242,8 +242,11 @@ def run_qemu(args, deadline, sock_path):
                     mismatches.append(diff)
                     print("MISMATCH " + diff)
                 frames += 1
-                proc.stdin.write(b"\n")
-                proc.stdin.flush()
+                try:
+                    proc.stdin.write(b"\n")
+                    proc.stdin.flush()
+                except OSError as e:
+                    raise Broken("cannot reach the firmware after frame %d: %s" % (n, e))
             code = proc.wait(timeout=max(1.0, deadline - time.monotonic()))
         except subprocess.TimeoutExpired:
             raise Broken("QEMU did not exit before the time limit")
@@ -279,7 +282,7 @@ def main():
     os.makedirs(args.dir, exist_ok=True)
     try:
         frames, mismatches = run(args)
-    except Broken as e:
+    except (Broken, OSError, ValueError) as e:
         print("oled_test: cannot complete the test: %s" % e)
         return 2
     if args.expect_mismatch:
