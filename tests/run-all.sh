@@ -3,6 +3,8 @@
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
+#      (the M3 build also runs the LM3S6965 OLED firmware on QEMU's emulated
+#      display against the host's frames: port/lm3s6965, about 10 s)
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
 #      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
