@@ -27,6 +27,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -90,6 +91,7 @@ def main():
     chosen = [m for m in MUTATIONS if args.only in m[0]]
     if args.sample:
         chosen = random.Random(args.seed).sample(chosen, min(args.sample, len(chosen)))
+    start = time.time()
     tmp = tempfile.mkdtemp(prefix="zline-mutate-")
     tree, build = os.path.join(tmp, "src"), os.path.join(tmp, "build")
     results = []
@@ -103,6 +105,14 @@ def main():
             print(out)
             print("mutate: the unmutated tree does not build")
             return 2
+        rc, out = run(["ctest", "--test-dir", build, "-j", str(args.jobs), "-E", args.exclude, "--timeout", "120"]
+                      + (["-R", args.tests] if args.tests else []), tree, 3600)
+        if rc != 0:
+            print(out)
+            print("mutate: the unmutated tree fails its tests: no mutation can be judged")
+            return 2
+        print("mutate: baseline built and green in %.0f s; %d mutation(s)" % (time.time() - start, len(chosen)),
+              flush=True)
         for mid, base, find, repl, desc in chosen:
             hits = find_file(tree, base)
             text = open(hits[0], encoding="utf-8").read() if len(hits) == 1 else ""
@@ -141,8 +151,9 @@ def main():
         for mid, base, desc, verdict, by in results:
             print("| `%s` | %s | %s | %s | %s |" % (mid, base, desc, verdict, by.replace("|", "\\|")))
         print("\nKill rate: %d of %d (%d%%)" % (killed, total, (100 * killed // total) if total else 0))
-    print("mutate: %d killed, %d survived, %d stale, of %d" %
-          (killed, sum(1 for r in results if r[3] == "survived"), sum(1 for r in results if r[3] == "stale"), total))
+    print("mutate: %d killed, %d survived, %d stale, of %d (%.0f s)" %
+          (killed, sum(1 for r in results if r[3] == "survived"), sum(1 for r in results if r[3] == "stale"), total,
+           time.time() - start))
     return 0 if killed == total else 1
 
 
