@@ -5,6 +5,8 @@
 #      with clang: its -fsanitize=undefined includes float-cast-overflow,
 #      which GCC's does not (the OBJ normalisation finding of issue 16)
 #   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
+#   3b. a sample of 3 mutations (tools/mutation/mutate.py, chosen by the date):
+#       each must make the host suite fail
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
 #      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
@@ -40,10 +42,23 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
         -DZLINE_CPU="$cpu"
 done
+# --- mutation sample (issue 16) ---------------------------------------------
+# Three mutations of tools/mutation/mutations.py, chosen by the date (a
+# different three each day), applied to a copy of the tree; each must make the
+# host suite fail. Every mutation counts as one test in the closing line.
+echo "=== mutation sample"
+mut_log=$(mktemp)
+python3 tools/mutation/mutate.py --sample "${MUTATION_SAMPLE:-3}" --jobs "$jobs" | tee "$mut_log"
+mut_killed=$(sed -n 's/^mutate: \([0-9]*\) killed, 0 survived, 0 stale.*/\1/p' "$mut_log")
+rm -f "$mut_log"
+[ -n "$mut_killed" ] || { echo "zline: a sampled mutation survived (tools/mutation/mutate.py)"; exit 1; }
+total=$((total + mut_killed))
+# ------------------------------------------------------------------------------
 echo "=== static analysis"
 sh tools/lint/run.sh
 echo "=== fuzzing, ${FUZZ_SECONDS:-60} s per target"
 sh tests/fuzz/run.sh build/ci-fuzz
 echo "=== all test suites passed"
-# The plain closing line: CTest tests of all five builds (lint and fuzz runs not counted).
+# The plain closing line: CTest tests of all five builds and the sampled
+# mutations (lint and fuzz runs not counted).
 echo "zline: $total passed, 0 failed"
