@@ -134,7 +134,7 @@ MUTATIONS = [
      "OBJ: backslash continuation ignored"),
     ("obj-utf8-in-names-rejected", "zl_obj.c",
      "        if (is_ignored(t))\n            continue;\n        st = check_ascii(p, line, len);",
-     "        st = check_ascii(p, line, len);",
+     "        st = check_ascii(p, line, len);\n        if (is_ignored(t) && st == ZL_OBJ_OK)\n            continue;",
      "OBJ: bytes in ignored names rejected"),
     ("render-same-file-by-name", "zline_render.c",
      "    if (x.exists)\n        return x.dev == y.dev && x.ino == y.ino;",
