@@ -2,8 +2,10 @@
  * Wavefront OBJ loader (host port). See zl_obj.h for what is accepted.
  *
  * The text is read into memory and scanned three times:
- *   1. encoding: a UTF-16 byte order mark, NUL bytes or invalid UTF-8 stop
- *      the load, with the line they are on;
+ *   1. encoding: a UTF-16 byte order mark or a NUL byte stops the load,
+ *      with the line it is on (the statements read must be ASCII, checked
+ *      per statement in pass 3; comments and ignored names may hold any
+ *      bytes);
  *   2. counting: the v, vt and vn statements are counted, so that a face may
  *      refer to a vertex defined further down and every index is checked
  *      against the final counts the moment its line is parsed; errors are
@@ -137,7 +139,14 @@ static void *grow(void *arr, size_t *cap, size_t need, size_t elem)
 
 static int is_space(char c)
 {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || c == '\n';
+}
+
+/* White space, or the backslash of a line continuation (a backslash right
+ * before a line end, kept inside the joined line by next_line). */
+static int is_space_at(const char *s, const char *end)
+{
+    return is_space(*s) || (*s == '\\' && s + 1 < end && (s[1] == '\n' || s[1] == '\r'));
 }
 
 static int is_digit(char c)
@@ -149,14 +158,14 @@ static int is_digit(char c)
 static int next_token(const char **cur, const char *end, token *t)
 {
     const char *s = *cur;
-    while (s < end && is_space(*s))
+    while (s < end && is_space_at(s, end))
         s++;
     if (s == end) {
         *cur = s;
         return 0;
     }
     t->s = s;
-    while (s < end && !is_space(*s))
+    while (s < end && !is_space_at(s, end))
         s++;
     t->n = (size_t)(s - t->s);
     *cur = s;
@@ -169,30 +178,63 @@ static int tok_is(token t, const char *word)
     return t.n == n && memcmp(t.s, word, n) == 0;
 }
 
-/*
- * Next line of buf from *pos: [*line, *line + *len) without its LF, a CR
- * before it, and any comment. Returns 0 at the end of the buffer.
- */
-static int next_line(const char *buf, size_t size, size_t *pos, const char **line, size_t *len)
+/* Length of the line end at buf[i] (LF, CR LF or a lone CR), 0 if none. */
+static size_t line_end_at(const char *buf, size_t size, size_t i)
 {
-    const char *start, *nl, *hash;
-    size_t n;
-    if (*pos >= size)
+    if (buf[i] == '\n')
+        return 1;
+    if (buf[i] == '\r')
+        return i + 1 < size && buf[i + 1] == '\n' ? 2 : 1;
+    return 0;
+}
+
+/*
+ * Next logical line of buf from *pos: [*line, *line + *len) without its
+ * line end and any comment; *lines is the number of physical lines it
+ * spans. A line ends at LF, CR LF or a lone CR (classic Mac files). A
+ * backslash right before a line end, outside a comment, continues the line
+ * on the next one (the OBJ specification's continuation): the backslash and
+ * line end stay in the text and read as white space. Returns 0 at the end.
+ */
+static int next_line(const char *buf, size_t size, size_t *pos, const char **line, size_t *len,
+                     unsigned long *lines)
+{
+    size_t i = *pos, end;
+    const char *hash;
+    int comment = 0;
+    if (i >= size)
         return 0;
-    start = buf + *pos;
-    nl = (const char *)memchr(start, '\n', size - *pos);
-    n = nl ? (size_t)(nl - start) : size - *pos;
-    *pos = nl ? (size_t)(nl - buf) + 1 : size;
-    hash = (const char *)memchr(start, '#', n);
+    *lines = 1;
+    for (;;) {
+        while (i < size && line_end_at(buf, size, i) == 0) {
+            comment |= buf[i] == '#';
+            i++;
+        }
+        end = i;
+        if (i < size)
+            i += line_end_at(buf, size, i);
+        if (comment || end == *pos || buf[end - 1] != '\\' || i >= size)
+            break;
+        (*lines)++; /* continued */
+    }
+    *line = buf + *pos;
+    *len = end - *pos;
+    hash = (const char *)memchr(*line, '#', *len);
     if (hash != NULL)
-        n = (size_t)(hash - start);
-    *line = start;
-    *len = n;
+        *len = (size_t)(hash - *line);
+    *pos = i;
     return 1;
 }
 
 /* ------------------------------------------------------------- encoding */
 
+/*
+ * The file must be text: a UTF-16 byte order mark or a NUL byte stops the
+ * load. Other bytes are not checked here: comments and the names of the
+ * statements the loader ignores (g, o, usemtl, mtllib, ...) may hold any
+ * encoding, Latin-1 included; the statements it reads must be ASCII
+ * (check_ascii).
+ */
 static zl_obj_status check_encoding(parser *p, const unsigned char *b, size_t n, size_t *start)
 {
     size_t i;
@@ -203,51 +245,30 @@ static zl_obj_status check_encoding(parser *p, const unsigned char *b, size_t n,
                     "the file starts with a UTF-16 byte order mark; save it as UTF-8 or ASCII");
     if (n >= 3 && b[0] == 0xEF && b[1] == 0xBB && b[2] == 0xBF)
         *start = 3; /* UTF-8 byte order mark */
-    i = *start;
-    while (i < n) {
-        unsigned c = b[i];
-        size_t len, k;
-        unsigned lo = 0x80, hi = 0xBF; /* allowed range of the second byte */
-        if (c == '\n') {
+    for (i = *start; i < n;) {
+        size_t end = line_end_at((const char *)b, n, i);
+        if (end != 0) {
             p->line++;
-            i++;
+            i += end;
             continue;
         }
-        if (c == 0)
+        if (b[i] == 0)
             return fail(p, ZL_OBJ_ERR_PARSE,
                         "NUL byte: this is a binary or UTF-16 file, not ASCII or UTF-8 OBJ text");
-        if (c < 0x80) {
-            i++;
-            continue;
-        }
-        if (c >= 0xC2 && c <= 0xDF) {
-            len = 2;
-        } else if (c >= 0xE0 && c <= 0xEF) {
-            len = 3;
-            if (c == 0xE0)
-                lo = 0xA0; /* no overlong forms */
-            if (c == 0xED)
-                hi = 0x9F; /* no surrogates */
-        } else if (c >= 0xF0 && c <= 0xF4) {
-            len = 4;
-            if (c == 0xF0)
-                lo = 0x90;
-            if (c == 0xF4)
-                hi = 0x8F; /* nothing above U+10FFFF */
-        } else {
-            return fail(p, ZL_OBJ_ERR_PARSE,
-                        "invalid UTF-8 byte 0x%02X: the file must be ASCII or UTF-8", c);
-        }
-        for (k = 1; k < len; k++) {
-            unsigned d = i + k < n ? b[i + k] : 0;
-            unsigned dlo = k == 1 ? lo : 0x80, dhi = k == 1 ? hi : 0xBF;
-            if (i + k >= n || d < dlo || d > dhi)
-                return fail(
-                    p, ZL_OBJ_ERR_PARSE,
-                    "invalid UTF-8 sequence at byte 0x%02X: the file must be ASCII or UTF-8", c);
-        }
-        i += len;
+        i++;
     }
+    return ZL_OBJ_OK;
+}
+
+/* A statement the loader reads (v, vt, vn, f) is ASCII: numbers and indices. */
+static zl_obj_status check_ascii(parser *p, const char *line, size_t len)
+{
+    size_t i;
+    for (i = 0; i < len; i++)
+        if ((unsigned char)line[i] >= 0x80)
+            return fail(p, ZL_OBJ_ERR_PARSE,
+                        "byte 0x%02X: statements other than comments and ignored names must be ASCII",
+                        (unsigned)(unsigned char)line[i]);
     return ZL_OBJ_OK;
 }
 
@@ -684,8 +705,9 @@ static uint32_t spread15(uint32_t x)
 
 static uint32_t quantise(double v)
 {
-    /* monotonic in v, so a bounding box maps onto a range of codes */
-    return v <= 0.0 ? 0u : (v >= 32767.0 ? 32767u : (uint32_t)v);
+    /* monotonic in v, so a bounding box maps onto a range of codes; NaN
+     * (an overflowing box of coordinates near DBL_MAX) is not converted */
+    return !(v > 0.0) ? 0u : (v >= 32767.0 ? 32767u : (uint32_t)v);
 }
 
 static uint32_t zcode(const ear_work *w, double x, double y)
@@ -942,6 +964,7 @@ static zl_obj_status parse_text(parser *p, const char *buf, size_t size)
     size_t pos, start;
     const char *line;
     size_t len, i;
+    unsigned long lines, next_physical;
     zl_obj_status st;
 
     st = check_encoding(p, (const unsigned char *)buf, size, &start);
@@ -949,7 +972,7 @@ static zl_obj_status parse_text(parser *p, const char *buf, size_t size)
         return st;
 
     /* Counting pass. */
-    for (pos = start; next_line(buf, size, &pos, &line, &len);) {
+    for (pos = start; next_line(buf, size, &pos, &line, &len, &lines);) {
         const char *cur = line;
         token t;
         if (!next_token(&cur, line + len, &t))
@@ -963,13 +986,19 @@ static zl_obj_status parse_text(parser *p, const char *buf, size_t size)
     }
 
     /* Parsing pass. */
-    p->line = 0;
-    for (pos = start; next_line(buf, size, &pos, &line, &len);) {
+    next_physical = 1;
+    for (pos = start; next_line(buf, size, &pos, &line, &len, &lines);) {
         const char *cur = line, *end = line + len;
         token t;
-        p->line++;
+        p->line = next_physical; /* errors name the line the statement starts on */
+        next_physical += lines;
         if (!next_token(&cur, end, &t))
             continue; /* blank or a comment */
+        if (is_ignored(t))
+            continue;
+        st = check_ascii(p, line, len);
+        if (st != ZL_OBJ_OK)
+            return st;
         if (tok_is(t, "v"))
             st = parse_vertex(p, cur, end);
         else if (tok_is(t, "f"))
@@ -978,8 +1007,6 @@ static zl_obj_status parse_text(parser *p, const char *buf, size_t size)
             st = parse_attribute(p, cur, end, 0);
         else if (tok_is(t, "vn"))
             st = parse_attribute(p, cur, end, 1);
-        else if (is_ignored(t))
-            st = ZL_OBJ_OK;
         else
             st = fail(p, ZL_OBJ_ERR_PARSE, "unknown statement '%.*s%s'", QUOTE(t));
         if (st != ZL_OBJ_OK)
@@ -1123,6 +1150,25 @@ static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
     return ZL_OBJ_OK;
 }
 
+/* (c - center) / half, within -1 .. 1: the difference is at most half in
+ * magnitude (c lies in the box), so it is finite, and a division (not a
+ * multiplication by an infinite 1 / half) stays finite for a denormal half. */
+static double normalised(double c, double center, double half)
+{
+    double v = half > 0.0 ? (c - center) / half : 0.0;
+    return v < -1.0 ? -1.0 : v > 1.0 ? 1.0 : v;
+}
+
+/* Q16.16, rounded to nearest (ties up), of a value checked to be in range;
+ * clamped all the same, so that no input reaches an undefined conversion. */
+static zl_fixed to_q16(double c)
+{
+    double r = floor(c * 65536.0 + 0.5);
+    if (!(r >= -2147483648.0))
+        return INT32_MIN; /* also NaN, which the checks before exclude */
+    return r > 2147483647.0 ? INT32_MAX : (zl_fixed)r;
+}
+
 /* Move the parsed data into *obj: normalise, convert, triangulate. */
 static zl_obj_status build(parser *p, zl_obj *obj)
 {
@@ -1170,24 +1216,29 @@ static zl_obj_status build(parser *p, zl_obj *obj)
                 obj->bbox_max[j] = c;
         }
     if (p->normalize) {
-        double extent = 0.0;
+        /* Halves first: max - min and min + max can overflow near DBL_MAX,
+         * and 2 / extent is infinite for a denormal extent; half-extents
+         * and the centre of halves are finite for every finite input. */
+        double half = 0.0;
         for (j = 0; j < 3; j++) {
-            double e = obj->bbox_max[j] - obj->bbox_min[j];
-            center[j] = 0.5 * (obj->bbox_min[j] + obj->bbox_max[j]);
-            if (e > extent)
-                extent = e;
+            double h = 0.5 * obj->bbox_max[j] - 0.5 * obj->bbox_min[j];
+            center[j] = 0.5 * obj->bbox_min[j] + 0.5 * obj->bbox_max[j];
+            if (h > half)
+                half = h;
         }
-        /* A single point stays a point, at the origin. */
-        scale = extent > 0.0 ? 2.0 / extent : 1.0;
+        /* A single point stays a point, at the origin. 1 / half may be
+         * infinite for a denormal extent: obj->scale is informative only,
+         * the positions divide by half. */
+        scale = half > 0.0 ? 1.0 / half : 1.0;
+        for (i = 0; i < 3 * p->v_count; i++)
+            obj->positions[i] = to_q16(normalised(p->pos[i], center[i % 3], half));
+    } else {
+        for (i = 0; i < 3 * p->v_count; i++)
+            obj->positions[i] = to_q16(p->pos[i]); /* range checked while parsing */
     }
     for (j = 0; j < 3; j++)
         obj->center[j] = center[j];
     obj->scale = scale;
-    for (i = 0; i < 3 * p->v_count; i++) {
-        double c = (p->pos[i] - center[i % 3]) * scale;
-        /* Range checked while parsing (or |c| <= 1 after normalising). */
-        obj->positions[i] = (zl_fixed)floor(c * 65536.0 + 0.5);
-    }
 
     for (i = 0; i < p->face_count; i++) {
         const face_rec *f = &p->faces[i];

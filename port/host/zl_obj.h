@@ -21,8 +21,20 @@
  *   g o s usemtl mtllib l p and the free-form geometry statements
  *                        ignored
  *   # ...                a comment, at the start of a line or after data
- * Lines may end in LF or CRLF; the last line needs no newline; a UTF-8 byte
- * order mark is skipped.
+ *
+ * Lexical rules (issue 16):
+ *   line ends    LF, CR LF or a lone CR (classic Mac OS files); the last line
+ *                needs no line end; error line numbers count these ends
+ *   continuation a backslash right before a line end joins the next line
+ *                (the OBJ specification's rule), except inside a comment;
+ *                an error names the line the statement starts on
+ *   encoding     a UTF-8 byte order mark is skipped; a UTF-16 byte order
+ *                mark or a NUL byte is an error. Comments and the arguments
+ *                of ignored statements (names in g, o, usemtl, mtllib, ...)
+ *                may hold any other bytes: the loader never reads them, so
+ *                Latin-1 names (assimp's regr01.obj) load. The statements it
+ *                reads (v, vt, vn, f, and a statement's keyword) must be
+ *                ASCII: another byte is an error naming it and its line.
  *
  * Faces of more than three vertices are triangulated by ear clipping in the
  * plane of the polygon's dominant normal axis (Newell normal), which is
@@ -38,8 +50,9 @@
  * infinite value, an index of 0 or one that refers to no vertex (or texture
  * coordinate or normal), a face of fewer than three vertices, anything
  * after the numbers of a v line, more than 65535 vertices or triangles (the
- * limit of zl_mesh), a file with no faces, and a file that is not ASCII or
- * UTF-8 (a UTF-16 byte order mark, NUL bytes, invalid UTF-8 sequences).
+ * limit of zl_mesh), a file with no faces, and a file that is not text (a
+ * UTF-16 byte order mark, NUL bytes) or has a non-ASCII byte in a statement
+ * the loader reads.
  *
  * Floating point is used here, on the host, only to parse the file: positions
  * become Q16.16 (rounded to nearest, ties up) before they leave the loader.
@@ -73,7 +86,11 @@ typedef struct {
     /*
      * Non-zero: centre the bounding box of all vertices on the origin and
      * scale uniformly so that its largest extent is 2.0 (the benchmark
-     * scene's convention). Done in double before the conversion to Q16.16.
+     * scene's convention). Done in double before the conversion to Q16.16,
+     * and finite for every valid file: boxes below 1e-308 (denormal) and
+     * coordinates near DBL_MAX (whose sum overflows) give positions in
+     * -1 .. 1 like any other (tests/host/test_obj.c,
+     * test_normalize_extreme_boxes).
      * Zero: coordinates are taken as they are and must lie in the Q16.16
      * range -32768 .. 32767.99998 (else a FILE:LINE error).
      */

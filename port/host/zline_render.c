@@ -6,6 +6,9 @@
  * matrices are built with the core's own zl_mat4_* functions, so the image
  * is what a microcontroller running zline would draw.
  */
+#if !defined(_WIN32) && !defined(_POSIX_C_SOURCE)
+#define _POSIX_C_SOURCE 200809L /* stat: output paths compared by device and inode */
+#endif
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -17,6 +20,10 @@
 #include "zline/zline.h"
 #include "zline/zl_visibility.h"
 #include "bsp_build.h"
+
+#ifndef _WIN32
+#include <sys/stat.h>
+#endif
 
 #define EXIT_USAGE 2
 #define CLEAR_DEPTH 65535u
@@ -173,6 +180,103 @@ static int usage_error(const char *fmt, ...)
     va_end(ap);
     fputs("\nTry 'zline-render --help'.\n", stderr);
     return EXIT_USAGE;
+}
+
+/* ------------------------------------------------------ output paths */
+
+/*
+ * Which file a path names, for telling whether two paths are one file
+ * (./m.obj and m.obj, an absolute path, a hard or symbolic link): an
+ * existing file by its device and inode; a path that does not exist yet by
+ * its directory's device and inode and its last component.
+ */
+typedef struct {
+    int exists;
+    int is_regular;
+    unsigned long long dev, ino;
+    const char *base; /* last component (only for a file that does not exist) */
+} file_id;
+
+static void identify(const char *path, file_id *id)
+{
+    memset(id, 0, sizeof *id);
+#ifndef _WIN32
+    {
+        struct stat st;
+        char dir[4096];
+        const char *slash = strrchr(path, '/');
+        size_t n;
+        if (stat(path, &st) == 0) {
+            id->exists = 1;
+            id->is_regular = S_ISREG(st.st_mode);
+            id->dev = (unsigned long long)st.st_dev;
+            id->ino = (unsigned long long)st.st_ino;
+            return;
+        }
+        id->base = slash ? slash + 1 : path;
+        n = slash ? (size_t)(slash - path) : 0;
+        if (slash == NULL) {
+            strcpy(dir, ".");
+        } else if (n == 0) {
+            strcpy(dir, "/");
+        } else if (n < sizeof dir) {
+            memcpy(dir, path, n);
+            dir[n] = '\0';
+        } else {
+            id->base = path; /* absurdly long: compare whole paths */
+            return;
+        }
+        if (stat(dir, &st) == 0) {
+            id->dev = (unsigned long long)st.st_dev;
+            id->ino = (unsigned long long)st.st_ino;
+        }
+    }
+#else
+    id->base = path; /* no inodes: compare the spelling */
+#endif
+}
+
+static int same_file(const char *a, const char *b)
+{
+    file_id x, y;
+    identify(a, &x);
+    identify(b, &y);
+    if (x.exists != y.exists)
+        return 0;
+    if (x.exists)
+        return x.dev == y.dev && x.ino == y.ino;
+    return x.dev == y.dev && x.ino == y.ino && strcmp(x.base, y.base) == 0;
+}
+
+/*
+ * Outputs are written to a temporary file and renamed over the path, so a
+ * failed render leaves nothing behind. That would replace a FIFO or a device
+ * node by a regular file, so an existing output that is not a regular file
+ * is refused (write to a file and copy it there instead).
+ */
+static int check_output_paths(const options *o)
+{
+    const char *outs[2];
+    unsigned k;
+    outs[0] = o->out;
+    outs[1] = o->depth_out;
+    if (o->depth_out != NULL && same_file(o->depth_out, o->out))
+        return usage_error("the image and --depth must be different files ('%s' and '%s' are one file)",
+                           o->out, o->depth_out);
+    for (k = 0; k < 2; k++) {
+        file_id id;
+        if (outs[k] == NULL)
+            continue;
+        if (same_file(o->model, outs[k]))
+            return usage_error("refusing to write over the model file ('%s' is '%s')", outs[k], o->model);
+        identify(outs[k], &id);
+        if (id.exists && !id.is_regular)
+            return usage_error("'%s' is not a regular file (a FIFO, device or directory): outputs are "
+                               "written to a temporary file and renamed, which would replace it; "
+                               "write to a file and copy it there",
+                               outs[k]);
+    }
+    return 0;
 }
 
 static const char *status_name(zl_status s)
@@ -530,11 +634,11 @@ static int parse_options(int argc, char **argv, options *o)
     if (o->model == NULL || o->out == NULL)
         return usage_error("expected a model and an output file: zline-render [options] "
                            "model.obj out.ppm");
-    if (o->depth_out != NULL && strcmp(o->depth_out, o->out) == 0)
-        return usage_error("the image and --depth must be different files");
-    if (strcmp(o->model, o->out) == 0 ||
-        (o->depth_out != NULL && strcmp(o->model, o->depth_out) == 0))
-        return usage_error("refusing to write over the model file");
+    {
+        int rc = check_output_paths(o);
+        if (rc != 0)
+            return rc;
+    }
     if (o->have_eye && o->have_orbit)
         return usage_error("--eye and --orbit both place the camera: give one");
     if (o->pixel_space) {

@@ -96,6 +96,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_REQUIRE(obj.triangle_count >= obj.face_count && obj.triangle_count > 0, "triangles %u faces %u",
                    obj.triangle_count, obj.face_count);
         FZ_REQUIRE(msg_size == 0 || msg.data[0] == '\0', "message on success: %s", (char *)msg.data);
+        /* normalised positions are in -1 .. 1 for every valid file (issue 16:
+         * denormal boxes and boxes near DBL_MAX once gave NaN here) */
+        for (i = 0; opt.normalize && i < (size_t)obj.vertex_count * 3; i++)
+            FZ_REQUIRE(obj.positions[i] >= -65536 && obj.positions[i] <= 65536, "normalised coordinate %ld",
+                       (long)obj.positions[i]);
         for (i = 0; i < (size_t)obj.triangle_count * 3; i++)
             FZ_REQUIRE(obj.indices[i] < obj.vertex_count, "index %u of %u vertices", obj.indices[i],
                        obj.vertex_count);

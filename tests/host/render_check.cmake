@@ -6,6 +6,8 @@
 #   CHECK   valid | fails | modes | help
 #   ARGS    extra options, separated by '|'
 #   EXPECT  (fails) a regular expression stderr must match
+#   CHECKER (valid) golden_check: the image is checked against the reference
+#           (tests/support/zt_ref), not only its header and size
 # A model that does not exist (the shared models are optional) skips the test:
 # it prints "SKIP:" which the test's SKIP_REGULAR_EXPRESSION matches.
 cmake_minimum_required(VERSION 3.20)
@@ -71,6 +73,14 @@ elseif(CHECK STREQUAL "valid")
   endif()
   check_ppm("${OUT}.ppm" 320 240)
   no_leftovers("${OUT}.ppm")
+  if(CHECKER)
+    execute_process(COMMAND "${CHECKER}" "${OUT}.ppm" "${MODEL}" ${extra} RESULT_VARIABLE rc
+                    OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "the reference disagrees with ${OUT}.ppm: ${out}${err}")
+    endif()
+    message(STATUS "${out}")
+  endif()
 
 elseif(CHECK STREQUAL "fails")
   file(REMOVE "${OUT}.ppm" "${OUT}.pgm")

@@ -608,12 +608,97 @@ static void test_errors_encoding(void)
     expect_error_mem(utf16le, sizeof utf16le - 1, 1, "UTF-16");
     expect_error_mem(utf16be, sizeof utf16be - 1, 1, "UTF-16");
     expect_error_mem(nul, sizeof nul - 1, 3, "NUL byte");
-    expect_error("v 0 0 0\n# caf\xE9\nf 1 1 1\n", 2, "invalid UTF-8");
-    expect_error("v 0 0 0\n\n\n# \xC3\n", 4, "invalid UTF-8");
-    expect_error("# \xED\xA0\x80 surrogate\n", 1, "invalid UTF-8");
-    expect_error("# \xC0\xAF overlong\n", 1, "invalid UTF-8");
+    /* The statements the loader reads are ASCII; the byte and its line are named. */
+    expect_error("v 0 0 0\nv caf\xE9 0 0\nf 1 1 1\n", 2, "byte 0xE9");
+    expect_error("v 0 0 0\n\n\nf 1 1 1\xC3\n", 4, "must be ASCII");
+    expect_error("v 0 0 0\n\xC3\xA9 1 2 3\n", 2, "byte 0xC3");
     /* Valid UTF-8 in comments and names is fine. */
     load_ok("# café ☕ 𝄞\ng grüße\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+}
+
+/*
+ * OBJ lexical rules (zl_obj.h): comments and the names of ignored statements
+ * may hold any bytes but NUL (Latin-1 material names, as assimp's
+ * regr01.obj); a backslash before a line end continues the line; a line may
+ * end in LF, CR LF or a lone CR, and errors count lines by those ends.
+ */
+static void test_latin1_in_names_and_comments_is_ignored(void)
+{
+    load_ok("mtllib r\xE9gr.mtl\nusemtl Mat\xE9riau_\xC0\xFF\ng gr\xFC\xDF" "e\no \xA0\n# caf\xE9 \xC0\xAF \xED\xA0\x80\n"
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # \xE9t\xE9\n");
+    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(1, obj.triangle_count);
+}
+
+static void test_backslash_continues_a_line(void)
+{
+    load_ok("v 0 0 \\\n0\nv 1 \\\r\n 0 0\nv 0 1 0\nf 1 \\\n 2 \\\n 3\n");
+    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(1, obj.triangle_count);
+    TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE, obj.positions[3]);
+    assert_tri(0, 0, 1, 2);
+    zl_obj_free(&obj);
+    /* an error names the physical line where the statement starts, and
+     * lines after a continuation keep their numbers */
+    expect_error("v 0 0 0\nv 1 \\\n 0 0\nv 0 1 0 junk\nf 1 2 3\n", 4, "unexpected 'junk'");
+    expect_error("v 0 0 \\\n 0 \\\n junk\n", 1, "unexpected 'junk'");
+    /* a backslash inside a comment does not continue it */
+    load_ok("# see C:\\\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
+}
+
+static void test_cr_only_line_ends(void)
+{
+    load_ok("# classic Mac\rv 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(1, obj.triangle_count);
+    zl_obj_free(&obj);
+    expect_error("v 0 0 0\rv 1 0 0\r\rv 0 1 0\rf 1 2 3\rf 1 2\r", 6, "at least 3");
+    {
+        static const char nul[] = "v 0 0 0\rv 1 0 0\n\r\nv 0 \0 1 0\r";
+        expect_error_mem(nul, sizeof nul - 1, 4, "NUL byte");
+    }
+}
+
+/*
+ * Normalising extreme but valid boxes: a box below 1e-308 (denormal extents,
+ * where 2 / extent is infinite) and coordinates near 1.7e308 (where
+ * min + max overflows). Every position must be finite and in -1 .. 1 (the
+ * Q16.16 of the exact answer, up to rounding); no float-to-integer
+ * conversion may see NaN or infinity (clang's UBSan checks that in the
+ * sanitize build).
+ */
+static void test_normalize_extreme_boxes(void)
+{
+    static const char *const files[] = {
+        "v 1e-310 0 0\nv 3e-310 0 0\nv 2e-310 1e-310 0\nf 1 2 3\n",
+        "v 4.9e-324 0 0\nv 1e-323 0 0\nv 0 4.9e-324 0\nf 1 2 3\n",
+        "v 1.7e308 0 0\nv 1.6e308 1e307 0\nv 1.65e308 0 1e307\nf 1 2 3\n",
+        "v -1.7e308 1.7e308 0\nv 1.7e308 -1.7e308 0\nv 0 0 1.7e308\nf 1 2 3\n",
+        ("v 1.7976931348623157e308 1.7976931348623157e308 1.7976931348623157e308\n"
+         "v -1.7976931348623157e308 -1.7976931348623157e308 -1.7976931348623157e308\nv 0 0 0\nf 1 2 3\n"),
+    };
+    unsigned f, i;
+    for (f = 0; f < sizeof files / sizeof files[0]; f++) {
+        TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_OBJ_OK, load_text(files[f], 1), msg);
+        for (i = 0; i < 9; i++)
+            TEST_ASSERT_TRUE(obj.positions[i] >= -ZL_FX_ONE && obj.positions[i] <= ZL_FX_ONE);
+        TEST_ASSERT_TRUE(isfinite(obj.center[0]) && isfinite(obj.center[1]) && isfinite(obj.center[2]));
+        zl_obj_free(&obj);
+    }
+    /* the denormal triangle keeps its shape: x -1, 1, 0 and y -1, -1, 1 */
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, load_text(files[0], 1));
+    TEST_ASSERT_EQUAL_INT32(-ZL_FX_ONE, obj.positions[0]);
+    TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE, obj.positions[3]);
+    TEST_ASSERT_EQUAL_INT32(0, obj.positions[6]);
+    TEST_ASSERT_EQUAL_INT32(-ZL_FX_ONE / 2, obj.positions[1]);
+    TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE / 2, obj.positions[7]);
+    zl_obj_free(&obj);
+    /* the box spanning the whole double range: the corners are -1 and 1, the origin 0 */
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, load_text(files[4], 1));
+    TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE, obj.positions[0]);
+    TEST_ASSERT_EQUAL_INT32(-ZL_FX_ONE, obj.positions[3]);
+    TEST_ASSERT_EQUAL_INT32(0, obj.positions[6]);
 }
 
 /* n statements "prefix" after three vertices, as one text. */
@@ -837,6 +922,10 @@ int main(void)
     RUN_TEST(test_errors_line_numbers_with_crlf);
     RUN_TEST(test_errors_empty_and_no_faces);
     RUN_TEST(test_errors_encoding);
+    RUN_TEST(test_latin1_in_names_and_comments_is_ignored);
+    RUN_TEST(test_backslash_continues_a_line);
+    RUN_TEST(test_cr_only_line_ends);
+    RUN_TEST(test_normalize_extreme_boxes);
     RUN_TEST(test_errors_limits);
     RUN_TEST(test_file_errors);
     RUN_TEST(test_shared_models_load);

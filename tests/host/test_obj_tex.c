@@ -100,11 +100,31 @@ static void test_corners_without_vt_get_zero(void)
     zl_obj_free(&obj);
 }
 
+/* A negative vt index counts back from the last vt defined before the
+ * face's line, not from the end of the file. */
+static void test_relative_vt_counts_back_from_the_face(void)
+{
+    static const char text[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                               "vt 0.25 0\nvt 0.5 0\nvt 0.75 0\n"
+                               "f 1/-3 2/-2 3/-1\n"
+                               "vt 0.125 0\nvt 0.0625 0\n";
+    uint32_t i;
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_mem_tex(&obj, text, sizeof text - 1, "r.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
+    for (i = 0; i < 3; i++) {
+        zl_fixed x = obj.positions[i * 3], y = obj.positions[i * 3 + 1];
+        double want = x != 0 ? 0.5 : y != 0 ? 0.75 : 0.25;
+        TEST_ASSERT_EQUAL_INT32(fx(want), obj.texcoords[i * 2]);
+    }
+    zl_obj_free(&obj);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_quad_without_seams);
     RUN_TEST(test_seam_splits_vertices);
     RUN_TEST(test_corners_without_vt_get_zero);
+    RUN_TEST(test_relative_vt_counts_back_from_the_face);
     return UNITY_END();
 }

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""Mutation testing of zline: does the test suite notice a broken rule?
+
+Each mutation (tools/mutation/mutations.py) names a source file by its
+basename (found by searching core/ and port/host/ recursively, so files may
+move between folders), an exact text that must occur exactly once, its
+replacement and a description. For each mutation the tool applies it to a
+COPY of the tree (a temporary directory: the working tree is never touched,
+so an interruption leaves nothing behind), rebuilds the host build
+(Release), runs the CTest subset and records:
+
+  killed    some test failed (or the mutant did not build)
+  survived  every test passed: a gap in the tests
+  stale     the text was not found exactly once (the code moved on)
+
+Usage:
+  python3 tools/mutation/mutate.py                  # every mutation
+  python3 tools/mutation/mutate.py --sample 3       # 3, chosen by --seed
+  python3 tools/mutation/mutate.py --markdown       # the table for docs/
+Exit status: 1 when a mutation survived or is stale, else 0.
+"""
+import argparse
+import datetime
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+from mutations import MUTATIONS  # noqa: E402
+
+SEARCH_DIRS = ("core", "port/host")
+# Slow or unrelated tests left out: the cross-compiler symbol check, the
+# tools' own checks and the fuzz corpus replays (the unit tests cover them).
+DEFAULT_EXCLUDE = "core_no_float|stack_bound|depthcalc|obj2c|visbench|zline_bsp"
+
+
+def find_file(tree, basename):
+    hits = []
+    for d in SEARCH_DIRS:
+        for dirpath, _, files in os.walk(os.path.join(tree, d)):
+            if basename in files:
+                hits.append(os.path.join(dirpath, basename))
+    return hits
+
+
+def copy_tree(dst):
+    """The worktree's files without build trees and git metadata."""
+    def ignore(path, names):
+        if os.path.abspath(path) == ROOT:
+            return [n for n in names if n.startswith("build") or n in (".git", "out")]
+        return []
+    shutil.copytree(ROOT, dst, ignore=ignore, symlinks=True)
+
+
+def run(cmd, cwd, timeout):
+    try:
+        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout)
+        return p.returncode, p.stdout.decode(errors="replace")
+    except subprocess.TimeoutExpired:
+        return 124, "timeout"
+
+
+def failed_tests(out):
+    names = []
+    for line in out.splitlines():
+        line = line.strip()
+        if line and line[0].isdigit() and " - " in line and "(" in line:
+            names.append(line.split(" - ", 1)[1].split(" (")[0])
+    return names
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--sample", type=int, default=0, help="run only N mutations chosen by --seed")
+    ap.add_argument("--seed", default=datetime.date.today().isoformat(), help="seed of --sample (default: today)")
+    ap.add_argument("--only", default="", help="run the mutations whose id contains this text")
+    ap.add_argument("--exclude", default=DEFAULT_EXCLUDE, help="ctest -E regex")
+    ap.add_argument("--tests", default="", help="ctest -R regex (default: every test not excluded)")
+    ap.add_argument("--jobs", type=int, default=int(os.environ.get("JOBS", "2")))
+    ap.add_argument("--markdown", action="store_true", help="print the result as a Markdown table")
+    ap.add_argument("--keep", action="store_true", help="keep the temporary tree (for debugging)")
+    ap.add_argument("--shared", default=os.path.join(os.path.dirname(ROOT), "shared"), help="ZLINE_SHARED_DIR")
+    args = ap.parse_args()
+
+    chosen = [m for m in MUTATIONS if args.only in m[0]]
+    if args.sample:
+        chosen = random.Random(args.seed).sample(chosen, min(args.sample, len(chosen)))
+    start = time.time()
+    tmp = tempfile.mkdtemp(prefix="zline-mutate-")
+    tree, build = os.path.join(tmp, "src"), os.path.join(tmp, "build")
+    results = []
+    try:
+        copy_tree(tree)
+        rc, out = run(["cmake", "-S", tree, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                       "-DZLINE_SHARED_DIR=" + args.shared], tree, 600)
+        if rc == 0:
+            rc, out = run(["cmake", "--build", build, "-j", str(args.jobs)], tree, 1800)
+        if rc != 0:
+            print(out)
+            print("mutate: the unmutated tree does not build")
+            return 2
+        rc, out = run(["ctest", "--test-dir", build, "-j", str(args.jobs), "-E", args.exclude, "--timeout", "120"]
+                      + (["-R", args.tests] if args.tests else []), tree, 3600)
+        if rc != 0:
+            print(out)
+            print("mutate: the unmutated tree fails its tests: no mutation can be judged")
+            return 2
+        print("mutate: baseline built and green in %.0f s; %d mutation(s)" % (time.time() - start, len(chosen)),
+              flush=True)
+        for mid, base, find, repl, desc in chosen:
+            hits = find_file(tree, base)
+            text = open(hits[0], encoding="utf-8").read() if len(hits) == 1 else ""
+            if len(hits) != 1 or text.count(find) != 1:
+                results.append((mid, base, desc, "stale", "text not found exactly once"))
+                print("%-28s stale" % mid, flush=True)
+                continue
+            try:
+                with open(hits[0], "w", encoding="utf-8") as f:
+                    f.write(text.replace(find, repl))
+                rc, out = run(["cmake", "--build", build, "-j", str(args.jobs)], tree, 1800)
+                if rc != 0:
+                    verdict, by = "killed", "(does not build)"
+                else:
+                    rc, out = run(["ctest", "--test-dir", build, "-j", str(args.jobs), "-E", args.exclude,
+                                   "--timeout", "120"] + (["-R", args.tests] if args.tests else []), tree, 3600)
+                    names = failed_tests(out)
+                    verdict = "killed" if rc != 0 else "survived"
+                    by = ", ".join(names[:3]) + (" ..." if len(names) > 3 else "")
+            finally:
+                with open(hits[0], "w", encoding="utf-8") as f:
+                    f.write(text)
+            results.append((mid, base, desc, verdict, by))
+            print("%-28s %-8s %s" % (mid, verdict, by), flush=True)
+        # leave the copy's build as it was (not needed: the copy is removed)
+    finally:
+        if args.keep:
+            print("kept " + tmp)
+        else:
+            shutil.rmtree(tmp, ignore_errors=True)
+    killed = sum(1 for r in results if r[3] == "killed")
+    total = len(results)
+    if args.markdown:
+        print("\n| mutation | file | rule broken | result | killed by |")
+        print("|---|---|---|---|---|")
+        for mid, base, desc, verdict, by in results:
+            print("| `%s` | %s | %s | %s | %s |" % (mid, base, desc, verdict, by.replace("|", "\\|")))
+        print("\nKill rate: %d of %d (%d%%)" % (killed, total, (100 * killed // total) if total else 0))
+    print("mutate: %d killed, %d survived, %d stale, of %d (%.0f s)" %
+          (killed, sum(1 for r in results if r[3] == "survived"), sum(1 for r in results if r[3] == "stale"), total,
+           time.time() - start))
+    return 0 if killed == total else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
