@@ -3,6 +3,8 @@
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
+#      (and, issue 11: for the hard-float M4F and M7, M33 and M55 on their
+#      boards; then the consumer tests of tests/consumer/run.sh)
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
 #      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
@@ -30,10 +32,34 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
         -DZLINE_CPU="$cpu"
 done
+# --- issue 11: real-part Cortex-M targets and consumer tests ------------------
+# The suite on the hard-float parts, each on its QEMU board: Cortex-M4F
+# (mps2-an386) and M7 (mps2-an500) whole; M33 (mps2-an505) and M55
+# (mps3-an547) whole but for test_watertight, the one slow test (about half
+# of a cross run's time), which M4F/M7 already run on the same code paths.
+for cpu in cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
+    exclude=
+    case $cpu in cortex-m33 | cortex-m55) exclude=test_watertight ;; esac
+    echo "=== $cpu${exclude:+ (without $exclude)}"
+    cmake -S . -B "build/ci-$cpu" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu" >/dev/null
+    cmake --build "build/ci-$cpu" -j "$jobs" >/dev/null
+    ctest --test-dir "build/ci-$cpu" --output-on-failure -j "$jobs" ${exclude:+-E "$exclude"} | tee "$log"
+    grep -q "tests passed, 0 tests failed out of" "$log" || exit 1
+    total=$((total + $(sed -n 's/.*tests passed, 0 tests failed out of \([0-9]*\).*/\1/p' "$log")))
+done
+# zline as a consumer uses it: add_subdirectory (host and every CPU/ABI under
+# QEMU), install + find_package, FetchContent, pkg-config, vendored sources,
+# strict C/C++ header builds (tests/consumer/run.sh; about 1 min of CPU).
+echo "=== consumer tests"
+sh tests/consumer/run.sh build/ci-consumer | tee "$log"
+grep -q "^consumer: [0-9]* passed, 0 failed" "$log" || exit 1
+total=$((total + $(sed -n 's/^consumer: \([0-9]*\) passed, 0 failed.*/\1/p' "$log")))
 echo "=== static analysis"
 sh tools/lint/run.sh
 echo "=== fuzzing, ${FUZZ_SECONDS:-60} s per target"
 sh tests/fuzz/run.sh build/ci-fuzz
 echo "=== all test suites passed"
-# The plain closing line: CTest tests of all five builds (lint and fuzz runs not counted).
+# The plain closing line: CTest tests of all the builds and the consumer tests
+# (lint and fuzz runs not counted).
 echo "zline: $total passed, 0 failed"
