@@ -37,6 +37,7 @@ strict_cxx="-std=c++11 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wsign-con
 passed=0 failed=0 skipped=0
 rm -rf "$out"
 mkdir -p "$out"
+out=$(cd "$out" && pwd) # absolute: the cases configure projects in other folders
 
 SKIP=77
 # check NAME COMMAND...: run a case, its output in $out/NAME.log
