@@ -100,7 +100,10 @@ only_library_built() { # BUILD-DIR
         [ ! -e "$1/zline/$d" ] || fail "zline/$d was configured in the consumer's build"
     done
     # zline's flags never on a consumer file: the probe has no flags of its own.
-    grep -A3 '"file": ".*probe.c"' "$1/compile_commands.json" >"$1/probe.cmd" || fail "no probe in compile_commands.json"
+    # (CMake writes each entry's "command" on the line before its "file")
+    grep -B1 '"file": ".*/probe.c"' "$1/compile_commands.json" | grep '"command"' >"$1/probe.cmd" ||
+        fail "no probe in compile_commands.json"
+    cat "$1/probe.cmd"
     ! grep -q -- ' -W' "$1/probe.cmd" || fail "warning flags reached the consumer: $(cat "$1/probe.cmd")"
     echo "built: $libs and the consumer; no zline flag on the consumer's files"
 }
