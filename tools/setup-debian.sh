@@ -8,6 +8,8 @@ set -eu
 pkgs="cmake make gcc libc6-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
 qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck
 python3 imagemagick"
+# Consumer tests (tests/consumer): pkg-config, and g++ for the C++ header build.
+pkgs="$pkgs pkg-config g++"
 missing=""
 for p in $pkgs; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

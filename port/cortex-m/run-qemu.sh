@@ -6,8 +6,9 @@
 #   port/cortex-m/run-qemu.sh [-M machine] [-s icount-shift] [-t seconds] app.elf
 #
 # The board follows the ELF's architecture (ARMv7E-M: mps2-an386 Cortex-M4,
-# ARMv7-M: mps2-an385 Cortex-M3, ARMv6-M: microbit Cortex-M0 with 4 MiB
-# flash and RAM); -M overrides it. -icount shift 0 by default, so runs are
+# or mps2-an500 Cortex-M7 with an FPv5 FPU; ARMv7-M: mps2-an385 Cortex-M3;
+# ARMv6-M: microbit Cortex-M0 with 4 MiB flash and RAM; ARMv8-M Mainline:
+# mps2-an505 Cortex-M33; ARMv8.1-M: mps3-an547 Cortex-M55); -M overrides it. -icount shift 0 by default, so runs are
 # deterministic. -t kills QEMU after that many seconds (exit 124).
 set -u
 
@@ -38,8 +39,14 @@ if [ -z "$machine" ]; then
     if command -v arm-none-eabi-readelf >/dev/null 2>&1; then
         arch=$(arm-none-eabi-readelf -A "$elf" | sed -n 's/^ *Tag_CPU_arch: *//p' | head -n 1)
     fi
+    fp=
+    if [ "$arch" = v7E-M ]; then
+        fp=$(arm-none-eabi-readelf -A "$elf" | sed -n 's/^ *Tag_FP_arch: *//p' | head -n 1)
+    fi
     case $arch in
-    v7E-M) machine=mps2-an386 ;;
+    v7E-M) case $fp in FPv5*) machine=mps2-an500 ;; *) machine=mps2-an386 ;; esac ;; # FPv5: Cortex-M7
+    v8-M.mainline) machine=mps2-an505 ;;
+    v8.1-M.mainline) machine=mps3-an547 ;;
     v7) machine=mps2-an385 ;;   # v7-M reports "v7" with Tag_CPU_arch_profile: Microcontroller
     v6-M | v6S-M) machine=microbit ;;
     "") machine=mps2-an386

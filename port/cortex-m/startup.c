@@ -26,10 +26,16 @@
 #include "semihosting.h"
 #include "zl_port.h"
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-#define ZL_PORT_V7M 1 /* CFSR/HFSR/MMFAR/BFAR, SHCSR fault enables, MPU (PMSAv7) */
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__) || defined(__ARM_ARCH_8M_MAIN__) || \
+    defined(__ARM_ARCH_8_1M_MAIN__)
+#define ZL_PORT_V7M 1 /* CFSR/HFSR/MMFAR/BFAR, SHCSR fault enables (ARMv7-M, ARMv8-M Mainline) */
 #else
 #define ZL_PORT_V7M 0 /* ARMv6-M: HardFault only, no fault status registers */
+#endif
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#define ZL_PORT_PMSAV7 1 /* the MPU's ARMv7-M register layout (the stack guard) */
+#else
+#define ZL_PORT_PMSAV7 0 /* ARMv8-M's MPU (PMSAv8) differs: no guard region */
 #endif
 
 /* Linker script symbols (mps2.ld). */
@@ -92,6 +98,18 @@ __attribute__((section(".vectors"), used)) const zl_vector zl_port_vectors[15 + 
 void Reset_Handler(void)
 {
     __asm__ volatile(
+#if defined(__ARM_FP)
+        /* Hard-float or softfp build: the compiler and the C library may
+         * use FPU registers anywhere, so grant CP10/CP11 (the FPU) full
+         * access before any C code runs (CPACR, 0xE000ED88). */
+        "ldr r0, =0xE000ED88\n\t"
+        "ldr r1, [r0]\n\t"
+        "ldr r2, =0x00F00000\n\t"
+        "orrs r1, r2\n\t"
+        "str r1, [r0]\n\t"
+        "dsb\n\t"
+        "isb\n\t"
+#endif
         "ldr r0, =__stack_top\n\t"
         "msr psp, r0\n\t"
         "movs r0, #2\n\t" /* CONTROL.SPSEL = 1: thread mode uses PSP */
@@ -119,7 +137,7 @@ void Reset_Handler(void)
  * two >= 32 bytes, aligned to its size). */
 #define ZL_PORT_GUARD_LOG2 12
 
-#if ZL_PORT_V7M
+#if ZL_PORT_PMSAV7
 static void barrier(void)
 {
     __asm__ volatile("dsb\n\tisb" ::: "memory");
@@ -135,6 +153,8 @@ static void setup_faults(void)
     /* Trap integer division by zero (SDIV/UDIV otherwise return 0): it is
      * undefined behaviour in C, and the host test run traps it too. */
     SCB_CCR |= 1u << 4;
+#endif
+#if ZL_PORT_PMSAV7
     /* Stack guard: no access at all, even privileged, to the region below
      * the program stack; the rest of memory keeps the default map. */
     if (((MPU_TYPE >> 8) & 0xffu) != 0) {
@@ -240,7 +260,7 @@ static void print_cfsr_bits(uint32_t cfsr, uint32_t hfsr)
     } bits[] = {
         {0, "IACCVIOL"}, {1, "DACCVIOL"}, {3, "MUNSTKERR"}, {4, "MSTKERR"}, {5, "MLSPERR"},
         {8, "IBUSERR"}, {9, "PRECISERR"}, {10, "IMPRECISERR"}, {11, "UNSTKERR"}, {12, "STKERR"},
-        {13, "LSPERR"}, {16, "UNDEFINSTR"}, {17, "INVSTATE"}, {18, "INVPC"}, {19, "NOCP"},
+        {13, "LSPERR"}, {16, "UNDEFINSTR"}, {17, "INVSTATE"}, {18, "INVPC"}, {19, "NOCP"}, {20, "STKOF"},
         {24, "UNALIGNED"}, {25, "DIVBYZERO"},
     };
     size_t i;
@@ -314,7 +334,7 @@ void zl_port_fault(uint32_t exc_return, uint32_t *msp, uint32_t *psp)
     __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
     exc = ipsr & 0x1ffu;
 
-#if ZL_PORT_V7M
+#if ZL_PORT_PMSAV7
     /* Off with the MPU, so the frame can be read even when it was pushed
      * into the stack guard. */
     MPU_CTRL = 0;

@@ -107,6 +107,7 @@
 
 #include "zl_config.h"
 #include "zl_fixed.h"
+#include "zl_version.h"
 
 #ifdef __cplusplus
 extern "C" {

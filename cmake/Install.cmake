@@ -1,0 +1,62 @@
+# Install rules: headers, libzline.a, the CMake package (zlineConfig.cmake,
+# zlineConfigVersion.cmake, the exported targets) and pkg-config's zline.pc.
+#
+#   cmake --install build --prefix /opt/zline
+#   find_package(zline 0.1 CONFIG REQUIRED)            -> zline::zline
+#   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS host)  -> zline::host too
+#   pkg-config --cflags --libs zline   (and zline-host)
+#
+# The host port (OBJ loader, PNM writer) is its own export set and install
+# component, `host`: a cross build never installs it, and firmware that
+# finds zline never sees it.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(ZLINE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/zline CACHE STRING
+    "Where zlineConfig.cmake goes, relative to the prefix")
+
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/zline
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT core
+        FILES_MATCHING PATTERN "*.h")
+install(TARGETS zline EXPORT zlineTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT core
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT zlineTargets NAMESPACE zline:: DESTINATION ${ZLINE_INSTALL_CMAKEDIR}
+        COMPONENT core)
+
+if(TARGET zline_host)
+  install(FILES ${PROJECT_SOURCE_DIR}/port/host/zl_obj.h ${PROJECT_SOURCE_DIR}/port/host/zl_pnm.h
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/zline/host COMPONENT host)
+  install(TARGETS zline_host EXPORT zlineHostTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT host)
+  install(EXPORT zlineHostTargets NAMESPACE zline:: DESTINATION ${ZLINE_INSTALL_CMAKEDIR}
+          COMPONENT host)
+endif()
+
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/zlineConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/zlineConfig.cmake
+  INSTALL_DESTINATION ${ZLINE_INSTALL_CMAKEDIR})
+# Same major version: 0.1 finds 0.1.x, 0.2, ... (0.x is still the first API).
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/zlineConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/zlineConfig.cmake ${PROJECT_BINARY_DIR}/zlineConfigVersion.cmake
+        DESTINATION ${ZLINE_INSTALL_CMAKEDIR} COMPONENT core)
+
+# pkg-config: the prefix found from the .pc file's own folder (pcfiledir), so
+# `cmake --install --prefix` anywhere, or moving the tree, keeps it right.
+file(RELATIVE_PATH ZLINE_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+string(REGEX REPLACE "/$" "" ZLINE_PC_TO_PREFIX "${ZLINE_PC_TO_PREFIX}")
+set(ZLINE_PC_LIBDIR ${CMAKE_INSTALL_LIBDIR})
+set(ZLINE_PC_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR})
+configure_file(${CMAKE_CURRENT_LIST_DIR}/zline.pc.in ${PROJECT_BINARY_DIR}/zline.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/zline.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+        COMPONENT core)
+if(TARGET zline_host)
+  set(ZLINE_PC_HOST_LIBS "")
+  if(ZLINE_HAVE_LIBM)
+    set(ZLINE_PC_HOST_LIBS "-lm")
+  endif()
+  configure_file(${CMAKE_CURRENT_LIST_DIR}/zline-host.pc.in ${PROJECT_BINARY_DIR}/zline-host.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/zline-host.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+          COMPONENT host)
+endif()
