@@ -1189,6 +1189,10 @@ static int smooth_colors(const options *o, zl_obj *obj, zl_mesh *mesh, const zl_
             error("out of memory computing normals");
             return 0;
         }
+        if (o->stats)
+            printf("normals: computed, %s-weighted\n", angle ? "angle" : "area");
+    } else if (o->stats) {
+        printf("normals: the OBJ's vn\n");
     }
     zl_lighting_default(&lt);
     lt.ambient.r = lt.ambient.g = lt.ambient.b = (uint8_t)o->ambient;
