@@ -69,6 +69,11 @@ typedef struct {
     double *vt;     /* 2 per texture coordinate (u, v; v = 0 when absent) */
     size_t vt_cap;
     size_t corners_with_vt;
+    uint32_t *poly_vn; /* per face vertex: its vn index, or NO_VT */
+    size_t poly_vn_cap;
+    double *vn;        /* 3 per normal, as written */
+    size_t vn_cap;
+    size_t corners_with_vn;
     face_rec *faces;
     size_t face_count, face_cap;
     size_t tri_total;
@@ -471,15 +476,21 @@ static zl_obj_status parse_attribute(parser *p, const char *cur, const char *end
     token t;
     size_t k = 0;
     zl_obj_status st;
-    double uv[2] = {0.0, 0.0};
+    double uv[3] = {0.0, 0.0, 0.0};
     while (next_token(&cur, end, &t)) {
         double v = 0.0;
         st = parse_number(p, t, &v);
         if (st != ZL_OBJ_OK)
             return st;
-        if (k < 2)
+        if (k < 3)
             uv[k] = v;
         k++;
+    }
+    if (normal && k == 3) {
+        GROW(p->vn, p->vn_cap, (p->vn_seen + 1) * 3);
+        p->vn[p->vn_seen * 3] = uv[0];
+        p->vn[p->vn_seen * 3 + 1] = uv[1];
+        p->vn[p->vn_seen * 3 + 2] = uv[2];
     }
     if (!normal && k >= 1 && k <= 3) {
         GROW(p->vt, p->vt_cap, (p->vt_seen + 1) * 2);
@@ -542,7 +553,7 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
     while (next_token(&cur, end, &t)) {
         const char *part[3];
         size_t plen[3], parts = 1, i;
-        size_t idx = 0, vt_idx = NO_VT;
+        size_t idx = 0, vt_idx = NO_VT, vn_idx = NO_VT;
         part[0] = t.s;
         plen[0] = 0;
         for (i = 0; i < t.n; i++) {
@@ -576,13 +587,15 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
             p->corners_with_vt++;
         }
         if (parts == 3) {
-            size_t unused;
             st = resolve_index(p, t, part[2], plen[2], p->vn_seen, p->vn_total, "normal", "normals",
-                               &unused);
+                               &vn_idx);
             if (st != ZL_OBJ_OK)
                 return st;
+            p->corners_with_vn++;
         }
         GROW(p->poly, p->poly_cap, p->poly_count + 1);
+        GROW(p->poly_vn, p->poly_vn_cap, p->poly_count + 1);
+        p->poly_vn[p->poly_count] = (uint32_t)vn_idx;
         GROW(p->poly_vt, p->poly_vt_cap, p->poly_count + 1);
         p->poly_vt[p->poly_count] = (uint32_t)vt_idx;
         p->poly[p->poly_count++] = (uint32_t)idx;
@@ -956,6 +969,8 @@ static void parser_free(parser *p)
     free(p->poly);
     free(p->poly_vt);
     free(p->vt);
+    free(p->poly_vn);
+    free(p->vn);
     free(p->faces);
 }
 
@@ -1066,6 +1081,7 @@ static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
     uint32_t *src = (uint32_t *)malloc(corners * sizeof(uint32_t) + 1); /* new vertex -> position */
     zl_fixed *pos, *uv;
     uint8_t *col = NULL;
+    int16_t *nrm = NULL;
     if (head == NULL || next == NULL || key_vt == NULL || src == NULL) {
         free(head);
         free(next);
@@ -1118,10 +1134,14 @@ static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
     uv = (zl_fixed *)malloc(count * 2 * sizeof(zl_fixed) + 1);
     if (obj->vertex_colors != NULL)
         col = (uint8_t *)malloc(count * 3 + 1);
-    if (pos == NULL || uv == NULL || (obj->vertex_colors != NULL && col == NULL)) {
+    if (obj->normals != NULL)
+        nrm = (int16_t *)malloc(count * 3 * sizeof(int16_t) + 1);
+    if (pos == NULL || uv == NULL || (obj->vertex_colors != NULL && col == NULL) ||
+        (obj->normals != NULL && nrm == NULL)) {
         free(pos);
         free(uv);
         free(col);
+        free(nrm);
         free(head);
         free(next);
         free(key_vt);
@@ -1133,6 +1153,8 @@ static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
             pos[i * 3 + k] = obj->positions[src[i] * 3 + k];
             if (col != NULL)
                 col[i * 3 + k] = obj->vertex_colors[src[i] * 3 + k];
+            if (nrm != NULL)
+                nrm[i * 3 + k] = obj->normals[src[i] * 3 + k];
         }
         uv[i * 2] = key_vt[i] == NO_VT ? 0 : tex_fixed(p->vt[key_vt[i] * 2]);
         uv[i * 2 + 1] = key_vt[i] == NO_VT ? 0 : tex_fixed(1.0 - p->vt[key_vt[i] * 2 + 1]);
@@ -1141,6 +1163,10 @@ static zl_obj_status split_by_vt(parser *p, zl_obj *obj)
     free(obj->vertex_colors);
     obj->positions = pos;
     obj->vertex_colors = col;
+    if (nrm != NULL) {
+        free(obj->normals);
+        obj->normals = nrm;
+    }
     obj->texcoords = uv;
     obj->vertex_count = (uint32_t)count;
     free(head);
@@ -1167,6 +1193,49 @@ static zl_fixed to_q16(double c)
     if (!(r >= -2147483648.0))
         return INT32_MIN; /* also NaN, which the checks before exclude */
     return r > 2147483647.0 ? INT32_MAX : (zl_fixed)r;
+}
+
+/* A unit vector as Q14 int16 (16384 = 1.0), rounded; zero stays zero. */
+static void normal_q14(const double *v, int16_t *out)
+{
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    int k;
+    for (k = 0; k < 3; k++)
+        out[k] = (int16_t)(len > 0.0 ? floor(v[k] / len * 16384.0 + 0.5) : 0.0);
+}
+
+/*
+ * Per-vertex normals from the faces' vn: a vertex gets the normalised sum
+ * of the unit vn of every face corner that uses it (one vn per vertex, the
+ * usual smooth export, gives exactly that vn; vertices are not split by vn,
+ * so a hard edge is smoothed). A vertex without a vn corner gets (0, 0, 0).
+ * Normalising the model (a uniform scale) leaves normals unchanged.
+ */
+static zl_obj_status normals_from_vn(parser *p, zl_obj *obj)
+{
+    size_t nv = p->v_count, c, i;
+    double *acc = (double *)calloc(nv * 3 + 1, sizeof(double));
+    obj->normals = (int16_t *)malloc(nv * 3 * sizeof(int16_t) + 1);
+    if (acc == NULL || obj->normals == NULL) {
+        free(acc);
+        return out_of_memory(p);
+    }
+    for (c = 0; c < p->poly_count; c++) {
+        uint32_t n = p->poly_vn[c];
+        const double *v;
+        double len;
+        if (n == NO_VT)
+            continue;
+        v = &p->vn[n * 3u];
+        len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if (len > 0.0)
+            for (i = 0; i < 3; i++)
+                acc[p->poly[c] * 3u + i] += v[i] / len;
+    }
+    for (i = 0; i < nv; i++)
+        normal_q14(&acc[i * 3], &obj->normals[i * 3]);
+    free(acc);
+    return ZL_OBJ_OK;
 }
 
 /* Move the parsed data into *obj: normalise, convert, triangulate. */
@@ -1252,6 +1321,11 @@ static zl_obj_status build(parser *p, zl_obj *obj)
         p->col = NULL; /* handed over */
     }
     obj->vertex_count = (uint32_t)p->v_count;
+    if (p->corners_with_vn > 0) {
+        zl_obj_status st = normals_from_vn(p, obj);
+        if (st != ZL_OBJ_OK)
+            return st;
+    }
     if (p->texcoords && p->corners_with_vt > 0) {
         zl_obj_status st = split_by_vt(p, obj);
         if (st != ZL_OBJ_OK)
@@ -1374,6 +1448,7 @@ void zl_obj_free(zl_obj *obj)
     free(obj->indices);
     free(obj->vertex_colors);
     free(obj->texcoords);
+    free(obj->normals);
     memset(obj, 0, sizeof *obj);
 }
 
@@ -1409,4 +1484,112 @@ const char *zl_obj_status_name(zl_obj_status s)
         return "bad argument";
     }
     return "unknown status";
+}
+
+/* Position of vertex v as doubles. */
+static void vertex_pos(const zl_obj *obj, uint32_t v, double *out)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        out[k] = obj->positions[v * 3u + (unsigned)k] / 65536.0;
+}
+
+/* A vertex's position and index, sorted to find vertices at one position. */
+typedef struct {
+    zl_fixed p[3];
+    uint32_t i;
+} pos_key;
+
+static int pos_cmp(const void *pa, const void *pb)
+{
+    const pos_key *a = (const pos_key *)pa, *b = (const pos_key *)pb;
+    int k;
+    for (k = 0; k < 3; k++)
+        if (a->p[k] != b->p[k])
+            return a->p[k] < b->p[k] ? -1 : 1;
+    return a->i < b->i ? -1 : (a->i > b->i ? 1 : 0);
+}
+
+zl_obj_status zl_obj_compute_normals(zl_obj *obj, zl_obj_normal_weight weight)
+{
+    uint32_t nv, t, i, k;
+    double *acc;
+    pos_key *order;
+    int16_t *out;
+    if (obj == NULL || obj->positions == NULL || (weight != ZL_OBJ_NORMALS_AREA && weight != ZL_OBJ_NORMALS_ANGLE))
+        return ZL_OBJ_ERR_ARG;
+    nv = obj->vertex_count;
+    acc = (double *)calloc((size_t)nv * 3 + 1, sizeof(double));
+    order = (pos_key *)malloc((size_t)nv * sizeof(pos_key) + 1);
+    out = (int16_t *)malloc((size_t)nv * 3 * sizeof(int16_t) + 1);
+    if (acc == NULL || order == NULL || out == NULL) {
+        free(acc);
+        free(order);
+        free(out);
+        return ZL_OBJ_ERR_MEMORY;
+    }
+    for (t = 0; t < obj->triangle_count; t++) {
+        const uint16_t *ix = &obj->indices[t * 3u];
+        double p[3][3], e1[3], e2[3], n[3], len;
+        for (k = 0; k < 3; k++)
+            vertex_pos(obj, ix[k], p[k]);
+        for (k = 0; k < 3; k++) {
+            e1[k] = p[1][k] - p[0][k];
+            e2[k] = p[2][k] - p[0][k];
+        }
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (len == 0.0)
+            continue; /* zero area: no direction */
+        for (k = 0; k < 3; k++) {
+            double w = 1.0; /* area: the cross product's length is twice the area */
+            unsigned j;
+            if (weight == ZL_OBJ_NORMALS_ANGLE) {
+                /* the corner's angle, with the unit normal */
+                const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+                double u[3], v[3], uu = 0, vv = 0, uv = 0, cs;
+                for (j = 0; j < 3; j++) {
+                    u[j] = b[j] - a[j];
+                    v[j] = c[j] - a[j];
+                    uu += u[j] * u[j];
+                    vv += v[j] * v[j];
+                    uv += u[j] * v[j];
+                }
+                cs = uu > 0 && vv > 0 ? uv / sqrt(uu * vv) : 1.0;
+                w = acos(cs < -1.0 ? -1.0 : (cs > 1.0 ? 1.0 : cs)) / len;
+            }
+            for (j = 0; j < 3; j++)
+                acc[ix[k] * 3u + j] += n[j] * w;
+        }
+    }
+    /* Vertices at one position (split at texture seams, or repeated in the
+     * file) share the sum, so seams do not show in the lighting. */
+    for (i = 0; i < nv; i++) {
+        for (k = 0; k < 3; k++)
+            order[i].p[k] = obj->positions[i * 3u + k];
+        order[i].i = i;
+    }
+    qsort(order, nv, sizeof order[0], pos_cmp);
+    for (i = 0; i < nv;) {
+        uint32_t j = i, m;
+        double sum[3] = {0.0, 0.0, 0.0};
+        int16_t q[3];
+        while (j < nv && memcmp(order[j].p, order[i].p, sizeof order[i].p) == 0) {
+            for (k = 0; k < 3; k++)
+                sum[k] += acc[order[j].i * 3u + k];
+            j++;
+        }
+        normal_q14(sum, q);
+        for (m = i; m < j; m++)
+            for (k = 0; k < 3; k++)
+                out[order[m].i * 3u + k] = q[k];
+        i = j;
+    }
+    free(acc);
+    free(order);
+    free(obj->normals);
+    obj->normals = out;
+    return ZL_OBJ_OK;
 }

@@ -16,8 +16,12 @@
  *                        texcoords (s = u, t = 1 - v,
  *                        Q16.16, 2 per vertex), and a vertex used with
  *                        different vt is split into one vertex per pair
- *   vn                   validated (3 finite numbers) and counted, so that
- *                        face references to it can be checked
+ *   vn                   a normal (3 finite numbers); when faces refer to
+ *                        normals (v//vn, v/vt/vn) the model gets normals:
+ *                        per vertex, the normalised sum of the unit vn of
+ *                        its face corners, Q14 (16384 = 1.0); vertices are
+ *                        not split by vn (a hard edge is smoothed), and a
+ *                        vertex no corner gives a vn gets (0, 0, 0)
  *   g o s usemtl mtllib l p and the free-form geometry statements
  *                        ignored
  *   # ...                a comment, at the start of a line or after data
@@ -103,6 +107,8 @@ typedef struct {
     uint16_t *indices;       /* 3 per triangle */
     uint8_t *vertex_colors;  /* 3 per vertex (r, g, b), or NULL */
     zl_fixed *texcoords;     /* 2 per vertex (s, t), Q16.16, or NULL when no face uses vt */
+    int16_t *normals;        /* 3 per vertex, Q14 unit vectors, or NULL when no face uses vn
+                                (zl_obj_compute_normals makes them); for zl_light_vertices */
     uint32_t vertex_count;   /* <= ZL_OBJ_MAX_VERTICES */
     uint32_t triangle_count; /* <= ZL_OBJ_MAX_TRIANGLES */
     uint32_t face_count;     /* f lines */
@@ -140,6 +146,20 @@ zl_obj_status zl_obj_load_file_tex(zl_obj *obj, const char *path, const zl_obj_o
                                    size_t msg_size);
 zl_obj_status zl_obj_load_mem_tex(zl_obj *obj, const char *data, size_t size, const char *name,
                                   const zl_obj_options *opt, char *msg, size_t msg_size);
+
+/*
+ * Compute per-vertex normals from the triangles (replacing any from vn):
+ * each triangle adds its normal to its three vertices, weighted by its area
+ * (ZL_OBJ_NORMALS_AREA: the plain cross product) or by the angle of the
+ * triangle at that vertex (ZL_OBJ_NORMALS_ANGLE: the unit normal times the
+ * angle, Thurmer and Wuthrich 1998, which does not depend on how a face was
+ * triangulated). Vertices at the same position share the sum (no seam where
+ * a vertex was split by vt). The sum is normalised to Q14; a vertex of
+ * zero-area triangles only gets (0, 0, 0). ZL_OBJ_ERR_ARG or
+ * ZL_OBJ_ERR_MEMORY on failure (obj unchanged).
+ */
+typedef enum { ZL_OBJ_NORMALS_AREA = 0, ZL_OBJ_NORMALS_ANGLE = 1 } zl_obj_normal_weight;
+zl_obj_status zl_obj_compute_normals(zl_obj *obj, zl_obj_normal_weight weight);
 
 /* Release the arrays and empty *obj. Safe on an empty or failed zl_obj. */
 void zl_obj_free(zl_obj *obj);

@@ -54,6 +54,24 @@ static const char features_usage_text[] =
     "                       repeated, perspective-correct; lit with the light\n"
     "  --affine             with --texture: affine (screen-linear) mapping\n";
 
+/* Help of smooth lighting (issue #15), printed after usage_text too. */
+static const char smooth_usage_text[] =
+    "\nSmooth lighting (zl_light_vertices: OpenGL 1.x per-vertex lighting)\n"
+    "  --shade smooth       lit per vertex from vertex normals, Gouraud-\n"
+    "                       interpolated: ambient (--ambient, grey) plus\n"
+    "                       --light with diffuse 255 - ambient, plus fill lights;\n"
+    "                       the model's vertex colours or --color as material;\n"
+    "                       lights in world space (= model space here)\n"
+    "  --normals MODE       file: the OBJ's vn (an error without them); area or\n"
+    "                       angle: computed, weighted by triangle area or corner\n"
+    "                       angle; auto (default): vn when the OBJ has them, else\n"
+    "                       area\n"
+    "  --fill-light X,Y,Z,R,G,B  one more directional light with its diffuse\n"
+    "                       colour (up to 3 of them)\n"
+    "  --specular R,G,B     Blinn-Phong specular colour of every light (default\n"
+    "                       0,0,0: none), the viewer towards the camera\n"
+    "  --shininess N        specular exponent 0..128 (default 32)\n";
+
 static const char usage_text[] =
     "Usage: zline-render [options] model.obj out.ppm\n"
     "\n"
@@ -130,7 +148,7 @@ static const char usage_text[] =
     "  zline-render --orbit 30,20,3.5 --depth bunny.pgm --mode scanline --stats \\\n"
     "      port/host/models/bunny.obj bunny.ppm\n";
 
-enum { SHADE_FLAT, SHADE_VERTEX, SHADE_DEPTH };
+enum { SHADE_FLAT, SHADE_VERTEX, SHADE_DEPTH, SHADE_SMOOTH };
 
 typedef struct {
     const char *model, *out, *depth_out;
@@ -157,6 +175,12 @@ typedef struct {
     int affine;               /* --affine */
     zl_texture texture;
     const zl_fixed *texcoords;
+    /* issue #15: smooth lighting */
+    const char *normals_mode; /* file, area, angle or auto */
+    int fill_count;
+    double fill[3][6];        /* direction, colour */
+    zl_rgb specular;
+    int shininess;
 } options;
 
 /* ------------------------------------------------------------------ errors */
@@ -399,6 +423,7 @@ static int parse_options(int argc, char **argv, options *o)
     o->light[1] = 2.0;
     o->light[2] = 2.0;
     o->ambient = 48;
+    o->shininess = 32;
     o->color.r = o->color.g = o->color.b = 255;
     o->normalize = 1;
     o->format = ZL_FORMAT_RGB888;
@@ -449,6 +474,7 @@ static int parse_options(int argc, char **argv, options *o)
             fputs(usage_text, stdout);
             fputs(vis_usage_text, stdout);
             fputs(features_usage_text, stdout);
+            fputs(smooth_usage_text, stdout);
             return -1;
         } else if (FLAG("--size")) {
             unsigned long w, h;
@@ -536,8 +562,37 @@ static int parse_options(int argc, char **argv, options *o)
                 o->shade = SHADE_VERTEX;
             else if (strcmp(val, "depth") == 0)
                 o->shade = SHADE_DEPTH;
+            else if (strcmp(val, "smooth") == 0)
+                o->shade = SHADE_SMOOTH;
             else
-                return usage_error("--shade: expected flat, vertex or depth, got '%s'", val);
+                return usage_error("--shade: expected flat, vertex, smooth or depth, got '%s'", val);
+        } else if (FLAG("--normals")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "file") != 0 && strcmp(val, "area") != 0 && strcmp(val, "angle") != 0 &&
+                strcmp(val, "auto") != 0)
+                return usage_error("--normals: expected file, area, angle or auto, got '%s'", val);
+            o->normals_mode = val;
+        } else if (FLAG("--fill-light")) {
+            double *f;
+            NEEDS_VALUE;
+            if (o->fill_count >= 3)
+                return usage_error("--fill-light: at most 3 (4 lights with --light)");
+            f = o->fill[o->fill_count];
+            if (!parse_reals(val, f, 6) || f[0] * f[0] + f[1] * f[1] + f[2] * f[2] < 1e-12 || f[3] < 0 ||
+                f[3] > 255 || f[4] < 0 || f[4] > 255 || f[5] < 0 || f[5] > 255)
+                return usage_error("--fill-light: expected X,Y,Z,R,G,B with a non-zero direction and "
+                                   "colours 0..255, got '%s'", val);
+            o->fill_count++;
+        } else if (FLAG("--specular")) {
+            NEEDS_VALUE;
+            if (!parse_rgb(val, &o->specular))
+                return usage_error("--specular: expected R,G,B with integers 0..255, got '%s'", val);
+        } else if (FLAG("--shininess")) {
+            unsigned long v;
+            NEEDS_VALUE;
+            if (!parse_uint(val, ZL_MAX_SHININESS, &v))
+                return usage_error("--shininess: expected 0..%d, got '%s'", ZL_MAX_SHININESS, val);
+            o->shininess = (int)v;
         } else if (FLAG("--color") || FLAG("--colour")) {
             NEEDS_VALUE;
             if (!parse_rgb(val, &o->color))
@@ -964,7 +1019,7 @@ static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *
     cfg->band_rows = (uint16_t)o->band_rows;
     cfg->format = (uint8_t)o->format;
     cfg->color_buffers = 1;
-    cfg->gouraud = o->shade == SHADE_VERTEX;
+    cfg->gouraud = o->shade == SHADE_VERTEX || o->shade == SHADE_SMOOTH;
     cfg->max_meshes = 1;
     cfg->max_vertices = mesh->vertex_count;
     cfg->max_triangles = triangles;
@@ -1214,6 +1269,86 @@ static int load_texture(options *o, const zl_obj *obj, uint16_t **texels)
     return 1;
 }
 
+/*
+ * --shade smooth: the model's normals (vn or computed, by --normals), then
+ * zl_light_vertices into *lit, which the Gouraud draw interpolates. The
+ * lights are in world space, which is model space in this tool (no model
+ * matrix); the viewer direction is from the target towards the eye.
+ */
+static int normalize_light(const double *l, zl_vec3 *out);
+
+static int smooth_colors(const options *o, zl_obj *obj, zl_mesh *mesh, const zl_mat4 *mvp, uint8_t **lit)
+{
+    const char *mode = o->normals_mode != NULL ? o->normals_mode : "auto";
+    zl_lighting lt;
+    zl_status st;
+    int k;
+    if (strcmp(mode, "file") == 0 && obj->normals == NULL) {
+        error("--normals file: %s has no normals (vn) on its faces", o->model);
+        return 0;
+    }
+    if (strcmp(mode, "area") == 0 || strcmp(mode, "angle") == 0 || obj->normals == NULL) {
+        int angle = strcmp(mode, "angle") == 0;
+        if (zl_obj_compute_normals(obj, angle ? ZL_OBJ_NORMALS_ANGLE : ZL_OBJ_NORMALS_AREA) != ZL_OBJ_OK) {
+            error("out of memory computing normals");
+            return 0;
+        }
+        if (o->stats)
+            printf("normals: computed, %s-weighted\n", angle ? "angle" : "area");
+    } else if (o->stats) {
+        printf("normals: the OBJ's vn\n");
+    }
+    zl_lighting_default(&lt);
+    lt.ambient.r = lt.ambient.g = lt.ambient.b = (uint8_t)o->ambient;
+    lt.material = o->color;
+    lt.shininess = (uint8_t)o->shininess;
+    if (o->light_on) {
+        lt.light_count = 1;
+        if (!normalize_light(o->light, &lt.lights[0].dir)) {
+            error("--light: bad direction");
+            return 0;
+        }
+        lt.lights[0].diffuse.r = lt.lights[0].diffuse.g = lt.lights[0].diffuse.b = (uint8_t)(255 - o->ambient);
+        lt.lights[0].specular = o->specular;
+        for (k = 0; k < o->fill_count; k++) {
+            zl_light *L = &lt.lights[lt.light_count++];
+            if (!normalize_light(o->fill[k], &L->dir)) {
+                error("--fill-light: bad direction");
+                return 0;
+            }
+            L->diffuse.r = (uint8_t)(o->fill[k][3] + 0.5);
+            L->diffuse.g = (uint8_t)(o->fill[k][4] + 0.5);
+            L->diffuse.b = (uint8_t)(o->fill[k][5] + 0.5);
+            L->specular = o->specular;
+        }
+    }
+    if (mvp != NULL) {
+        zl_vec3 eye = eye_of(mvp), target;
+        double v[3];
+        if (!to_vec3(o->target, &target))
+            return 0;
+        v[0] = (eye.x - (double)target.x) / 65536.0;
+        v[1] = (eye.y - (double)target.y) / 65536.0;
+        v[2] = (eye.z - (double)target.z) / 65536.0;
+        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 0 && !normalize_light(v, &lt.viewer))
+            return 0;
+    } else {
+        lt.viewer.z = -ZL_FX_ONE; /* pixel space: the viewer looks down +z */
+    }
+    *lit = (uint8_t *)malloc((size_t)mesh->vertex_count * 3 + 1);
+    if (*lit == NULL) {
+        error("out of memory");
+        return 0;
+    }
+    st = zl_light_vertices(&lt, NULL, mesh, obj->normals, *lit);
+    if (st != ZL_OK) {
+        error("zl_light_vertices failed with %s", status_name(st));
+        return 0;
+    }
+    mesh->vertex_colors = *lit;
+    return 1;
+}
+
 static int normalize_light(const double *l, zl_vec3 *out)
 {
     double n = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
@@ -1273,7 +1408,12 @@ int main(int argc, char **argv)
         error("--light: bad direction");
         goto done;
     }
-    if (o.shade == SHADE_VERTEX) {
+    if (o.shade == SHADE_SMOOTH) {
+        state.shading = ZL_SHADE_GOURAUD;
+        state.light_on = 0; /* the light is in the vertex colours */
+        if (!smooth_colors(&o, &obj, &mesh, mvp_ptr, &colors))
+            goto done;
+    } else if (o.shade == SHADE_VERTEX) {
         state.shading = ZL_SHADE_GOURAUD;
         if (mesh.vertex_colors == NULL) {
             uint32_t i;

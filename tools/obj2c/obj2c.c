@@ -8,14 +8,22 @@
  *   const uint8_t  NAME_vertex_colors[3 * NAME_VERTEX_COUNT]; only when the OBJ
  *                  has a colour on every vertex (v x y z r g b) and
  *                  --no-colors is not given; NAME_HAS_VERTEX_COLORS says which
+ *   const int16_t  NAME_normals[3 * NAME_VERTEX_COUNT];       only with --normals:
+ *                  unit vectors, Q14 (16384 = 1.0), for zl_light_vertices;
+ *                  NAME_HAS_NORMALS says whether they are there
  *   const zl_mesh  NAME_mesh;                                 views the arrays
  *
  * All const, so on a microcontroller they stay in flash.
  *
- *   zline-obj2c [--normalize] [--no-colors] [--name NAME] IN.obj OUT.c OUT.h
+ *   zline-obj2c [--normalize] [--no-colors] [--normals MODE] [--name NAME] IN.obj OUT.c OUT.h
  *
  * --normalize  centre the bounding box on the origin and scale it to a
  *              largest extent of 2.0 (the benchmark scene's convention)
+ * --normals MODE  emit per-vertex normals: "file" the OBJ's vn (an error
+ *              when no face has one), "area" or "angle" computed from the
+ *              triangles, weighted by area or by corner angle
+ *              (zl_obj_compute_normals), "auto" the OBJ's vn when it has
+ *              them, else area-weighted; the C file's comment says which
  * --name NAME  prefix of the symbols, a C identifier (default: the OBJ's
  *              file name without extension, non-identifier characters as _)
  * Exit status 0 on success, 1 on a bad model or output error, 2 on usage.
@@ -29,7 +37,8 @@
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: zline-obj2c [--normalize] [--no-colors] [--name NAME] IN.obj OUT.c OUT.h\n");
+    fprintf(stderr, "usage: zline-obj2c [--normalize] [--no-colors] [--normals file|area|angle|auto] [--name NAME] "
+                    "IN.obj OUT.c OUT.h\n");
     exit(2);
 }
 
@@ -81,6 +90,7 @@ int main(int argc, char **argv)
     char msg[512], name[128], upper[128], guard[160];
     const char *in, *out_c, *out_h, *given_name = NULL;
     int colors_wanted = 1, has_colors, i, ok;
+    const char *normals_mode = NULL, *normals_from = NULL;
     uint32_t k, n;
     FILE *fc, *fh;
 
@@ -90,12 +100,17 @@ int main(int argc, char **argv)
             opt.normalize = 1;
         else if (strcmp(argv[i], "--no-colors") == 0)
             colors_wanted = 0;
+        else if (strcmp(argv[i], "--normals") == 0 && i + 1 < argc && normals_mode == NULL)
+            normals_mode = argv[++i];
         else if (strcmp(argv[i], "--name") == 0 && i + 1 < argc)
             given_name = argv[++i];
         else
             usage();
     }
     if (argc - i != 3)
+        usage();
+    if (normals_mode != NULL && strcmp(normals_mode, "file") != 0 && strcmp(normals_mode, "area") != 0 &&
+        strcmp(normals_mode, "angle") != 0 && strcmp(normals_mode, "auto") != 0)
         usage();
     in = argv[i];
     out_c = argv[i + 1];
@@ -119,6 +134,25 @@ int main(int argc, char **argv)
         return 1;
     }
     has_colors = colors_wanted && obj.vertex_colors != NULL;
+    if (normals_mode != NULL) {
+        int want_file = strcmp(normals_mode, "file") == 0;
+        if (want_file && obj.normals == NULL) {
+            fprintf(stderr, "zline-obj2c: %s: --normals file, but no face refers to a normal (vn)\n", in);
+            zl_obj_free(&obj);
+            return 1;
+        }
+        if (want_file || (strcmp(normals_mode, "auto") == 0 && obj.normals != NULL)) {
+            normals_from = "the OBJ's vn (normalised sum per vertex)";
+        } else {
+            int angle = strcmp(normals_mode, "angle") == 0;
+            if (zl_obj_compute_normals(&obj, angle ? ZL_OBJ_NORMALS_ANGLE : ZL_OBJ_NORMALS_AREA) != ZL_OBJ_OK) {
+                fprintf(stderr, "zline-obj2c: out of memory computing normals\n");
+                zl_obj_free(&obj);
+                return 1;
+            }
+            normals_from = angle ? "computed, angle-weighted" : "computed, area-weighted";
+        }
+    }
 
     fh = fopen(out_h, "w");
     fc = fopen(out_c, "w");
@@ -131,7 +165,10 @@ int main(int argc, char **argv)
     fprintf(fh, "#ifndef %s\n#define %s\n\n#include <stdint.h>\n\n#include \"zline/zline.h\"\n\n", guard, guard);
     fprintf(fh, "#define %s_VERTEX_COUNT %luu\n", upper, (unsigned long)obj.vertex_count);
     fprintf(fh, "#define %s_TRIANGLE_COUNT %luu\n", upper, (unsigned long)obj.triangle_count);
-    fprintf(fh, "#define %s_HAS_VERTEX_COLORS %d\n\n", upper, has_colors);
+    fprintf(fh, "#define %s_HAS_VERTEX_COLORS %d\n", upper, has_colors);
+    if (normals_from != NULL)
+        fprintf(fh, "#define %s_HAS_NORMALS 1\n", upper);
+    fputs("\n", fh);
     fprintf(fh, "/* x, y, z per vertex, Q16.16%s */\n", opt.normalize ?
             " (bounding box centred on the origin, largest extent 2.0)" : "");
     fprintf(fh, "extern const zl_fixed %s_positions[3 * %s_VERTEX_COUNT];\n", name, upper);
@@ -140,6 +177,10 @@ int main(int argc, char **argv)
     if (has_colors) {
         fprintf(fh, "/* r, g, b per vertex, 0..255 */\n");
         fprintf(fh, "extern const uint8_t %s_vertex_colors[3 * %s_VERTEX_COUNT];\n", name, upper);
+    }
+    if (normals_from != NULL) {
+        fprintf(fh, "/* normal x, y, z per vertex, Q14 unit vectors (16384 = 1.0), %s */\n", normals_from);
+        fprintf(fh, "extern const int16_t %s_normals[3 * %s_VERTEX_COUNT];\n", name, upper);
     }
     fprintf(fh, "/* A mesh viewing the arrays (no face colours). */\n");
     fprintf(fh, "extern const zl_mesh %s_mesh;\n\n#endif\n", name);
@@ -167,6 +208,13 @@ int main(int argc, char **argv)
         for (k = 0; k < obj.vertex_count; k++)
             fprintf(fc, "    %u, %u, %u,\n", obj.vertex_colors[3 * k], obj.vertex_colors[3 * k + 1],
                     obj.vertex_colors[3 * k + 2]);
+        fputs("};\n", fc);
+    }
+    if (normals_from != NULL) {
+        fprintf(fc, "\n/* normals: %s */\n", normals_from);
+        fprintf(fc, "const int16_t %s_normals[3 * %s_VERTEX_COUNT] = {\n", name, upper);
+        for (k = 0; k < obj.vertex_count; k++)
+            fprintf(fc, "    %d, %d, %d,\n", obj.normals[3 * k], obj.normals[3 * k + 1], obj.normals[3 * k + 2]);
         fputs("};\n", fc);
     }
     fprintf(fc, "\nconst zl_mesh %s_mesh = {\n    .positions = %s_positions,\n    .indices = %s_indices,\n",

@@ -269,6 +269,81 @@ void zl_state_default(zl_state *s);
  * is set and a light_dir component is outside +-1.0. */
 zl_status zl_state_check(const zl_state *s);
 
+/* --------------------------------------------- smooth (per-vertex) lighting */
+
+/*
+ * SMOOTH LIGHTING (tests/test_smooth_light.c checks it against a
+ * high-precision model of this equation). The OpenGL 1.x fixed-function
+ * model with GL_COLOR_MATERIAL (ambient and diffuse), an infinite viewer and
+ * directional lights, evaluated once per vertex by zl_light_vertices into a
+ * caller array of lit colours, which a Gouraud draw then interpolates
+ * (state.shading = ZL_SHADE_GOURAUD, state.light_on = 0, mesh.vertex_colors
+ * = that array). Per vertex, with n its normal (model space, any non-zero
+ * length), m its material colour (the mesh's vertex colour, else
+ * lighting.material) and each channel separately:
+ *
+ *   c = min(255, round( m (A + sum_i D_i d_i) / 255 + sum_i S_i s_i ))
+ *   d_i = max(0, n^ . L_i)
+ *   s_i = d_i > 0 ? max(0, n^ . H_i)^e : 0          (0^0 = 1)
+ *   L_i = unit(M^-1 l_i),  H_i = unit(M^-1 unit(unit(l_i) + unit(v)))
+ *
+ * n^ = n / |n| (a zero normal gets the ambient term only), A = ambient,
+ * D_i, S_i the light's diffuse and specular colours (0..255, already
+ * multiplied by the material's), e = shininess (Blinn-Phong), l_i the light
+ * direction and v the direction towards the viewer, both in the lights'
+ * space (world or eye space), and M the upper-left 3x3 of the matrix from
+ * model space to that space (NULL: identity, the lights are in model
+ * space). The lights are brought into model space once per call (M^-1 from
+ * the adjugate, no per-vertex matrix); when M is a rotation times a uniform
+ * scale this is exactly OpenGL's eye-space evaluation with GL_NORMALIZE.
+ * With any other M the normals are not re-normalised after the transform
+ * (a non-uniform scale then bends the lighting slightly; OpenGL's
+ * difference). A half vector of zero (light straight behind the viewer)
+ * gives no specular.
+ *
+ * Bound: every channel is within 1 of the exact real value of c before
+ * its rounding (the test measures the worst case); integer arithmetic only
+ * (Q30 unit vectors, 64-bit dot products), so every target computes the
+ * same bytes.
+ */
+#define ZL_MAX_LIGHTS 4
+#define ZL_MAX_SHININESS 128
+
+typedef struct {
+    zl_vec3 dir;     /* towards the light, lights' space; non-zero, any length */
+    zl_rgb diffuse;  /* light diffuse x material diffuse, 0..255 each */
+    zl_rgb specular; /* light specular x material specular; 0,0,0: none */
+} zl_light;
+
+typedef struct {
+    zl_rgb ambient;       /* scene (and lights') ambient x material ambient */
+    zl_rgb material;      /* material colour when the mesh has no vertex colours */
+    uint8_t light_count;  /* 0 .. ZL_MAX_LIGHTS */
+    uint8_t shininess;    /* Blinn-Phong exponent e, 0 .. ZL_MAX_SHININESS */
+    zl_vec3 viewer;       /* towards the viewer in the lights' space, non-zero
+                             when a light has specular: (0, 0, 1) in eye space */
+    zl_light lights[ZL_MAX_LIGHTS];
+} zl_lighting;
+
+/* Defaults: ambient 51 (0.2, OpenGL's), white material, no lights, shininess
+ * 0, viewer (0, 0, 1); each light white diffuse, no specular, along +z. */
+void zl_lighting_default(zl_lighting *lt);
+
+/*
+ * Lit colour of every vertex of mesh into colors (3 bytes r, g, b per
+ * vertex, vertex_count of them) by the SMOOTH LIGHTING equation. normals:
+ * 3 int16 per vertex (model space; unit length as Q14, 16384 = 1.0, is the
+ * convention, any non-zero length gives the same result). model: the
+ * matrix from model space to the lights' space (its upper-left 3x3 is
+ * used), NULL for the identity. Only positions' count and vertex_colors of
+ * the mesh are read. ZL_ERR_ARG for a NULL pointer; ZL_ERR_RANGE for more
+ * than ZL_MAX_LIGHTS lights, shininess above ZL_MAX_SHININESS, a zero light
+ * direction (or viewer, with specular), or a singular matrix. Nothing is
+ * written on an error.
+ */
+zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const zl_mesh *mesh,
+                            const int16_t *normals, uint8_t *colors);
+
 /* ------------------------------------------------- lines, points, style */
 
 /*

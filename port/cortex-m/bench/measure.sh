@@ -21,7 +21,7 @@ mkdir -p "$out"
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
     -DZLINE_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os \
-    bench_features_O2 bench_features_Os bench_vis_O2 >/dev/null
+    bench_features_O2 bench_features_Os bench_vis_O2 bench_smooth_O2 bench_smooth_Os >/dev/null
 
 plugin=$out/m4timing.so
 if ! ${CC:-cc} -std=c99 -O2 -shared -fPIC -o "$plugin" tools/qemu-m4-timing/m4timing.c 2>"$out/plugin.log"; then
@@ -49,6 +49,12 @@ for opt in O2 Os; do
     qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
         -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6 \
         -kernel "$bench/bench_features_$opt.elf" >"$out/features-$opt.txt" || status=1
+done
+# The smooth-lit bunny (bench_smooth.c, issue 15).
+for opt in O2 Os; do
+    qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+        -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6 \
+        -kernel "$bench/bench_smooth_$opt.elf" >"$out/smooth-$opt.txt" || status=1
 done
 # One bunny frame per visibility method (bench_vis.c).
 qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
@@ -197,6 +203,20 @@ for m in zbuffer scanline aet painter bsp-b2f bsp-f2b raycast; do
     w=$(awk -v m="$m" '$1 == "RESULT" && $3 == m && $4 == "work_bytes" { print $5; exit }' "$out/vis-O2.txt")
     echo "| $m | $(num "$t") | $(num "$r") | $(num "$w") |"
 done
+echo
+echo "### Smooth lighting on Cortex-M4 (bunny_smooth, bench_smooth.c)"
+echo
+echo "The bunny scene's camera, lit per vertex by zl_light_vertices (1839 vertices, area-weighted normals, a key light with Blinn-Phong specular, exponent 24, and a fill light, in eye space), Gouraud-interpolated. light: zl_light_vertices alone; draw: zl_clear + zl_draw_mesh of the lit mesh with the vertex cache; frame: light + draw; scanline: light + the zl_frame frame with one-row bands."
+echo
+echo "| interval | -O2 | -Os |"
+echo "|---|---:|---:|"
+for k in light draw frame scanline; do
+    sm() { awk -v k="$k" '$1 == "INTERVAL" && $3 == "bunny_smooth" && $4 == k { print $5; exit }' "$out/smooth-$1.txt"; }
+    echo "| $k | $(num "$(sm O2)") | $(num "$(sm Os)") |"
+done
+lv=$(awk '$1 == "RESULT" && $4 == "vertices" { print $5; exit }' "$out/smooth-O2.txt")
+li=$(awk '$1 == "INTERVAL" && $4 == "light" { print $5; exit }' "$out/smooth-O2.txt")
+[ -n "$lv" ] && [ -n "$li" ] && echo && echo "Lighting per vertex at -O2: $((li / lv)) instructions (2 lights, one with specular)."
 mism=$(awk '$3 ~ /_plugin_insn_mismatch$/' "$R")
 echo
 if [ -n "$plugin" ] && [ -z "$mism" ]; then

@@ -38,15 +38,62 @@ static void identity_like(zl_mat4 *m, zl_fixed sx, zl_fixed tx, zl_fixed tz)
     m->m[11] = tz;
 }
 
-static int camera(zl_mat4 *mvp, zl_vec3 eye)
+static int camera_view(zl_mat4 *mvp, zl_mat4 *view, zl_vec3 eye)
 {
-    zl_mat4 proj, view;
+    zl_mat4 proj;
     zl_vec3 target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
     if (zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(60)), ZL_FX_INT(SCENE_W) / SCENE_H,
                             ZL_FX_ONE / 10, ZL_FX_INT(100)) != ZL_OK ||
-        zl_mat4_look_at(&view, eye, target, up) != ZL_OK)
+        zl_mat4_look_at(view, eye, target, up) != ZL_OK)
         return -1;
-    zl_mat4_mul(mvp, &proj, &view);
+    zl_mat4_mul(mvp, &proj, view);
+    return 0;
+}
+
+static int camera(zl_mat4 *mvp, zl_vec3 eye)
+{
+    zl_mat4 view;
+    return camera_view(mvp, &view, eye);
+}
+
+static uint8_t bunny_lit[3 * BUNNY_VERTEX_COUNT];
+
+/* SCENE_BUNNY_SMOOTH (see scenes.h). */
+static int bunny_smooth(scene *s)
+{
+    zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2};
+    zl_lighting *lt = &s->lighting;
+    s->name = "bunny_smooth";
+    s->mesh = bunny_mesh;
+    s->mesh.vertex_colors = NULL; /* the material is one colour */
+    s->state.cull = ZL_CULL_BACK;
+    s->state.shading = ZL_SHADE_GOURAUD;
+    s->gouraud = 1;
+    if (camera_view(&s->mvp, &s->modelview, eye) != 0)
+        return -1;
+    zl_lighting_default(lt);
+    lt->ambient.r = lt->ambient.g = lt->ambient.b = 40;
+    lt->material.r = 230;
+    lt->material.g = 200;
+    lt->material.b = 160;
+    lt->light_count = 2;
+    lt->shininess = 24;
+    lt->lights[0].dir.x = -ZL_FX_ONE; /* key light: eye space, up left, towards the viewer */
+    lt->lights[0].dir.y = ZL_FX_INT(2);
+    lt->lights[0].dir.z = ZL_FX_INT(2);
+    lt->lights[0].diffuse.r = lt->lights[0].diffuse.g = lt->lights[0].diffuse.b = 215;
+    lt->lights[0].specular.r = lt->lights[0].specular.g = lt->lights[0].specular.b = 255;
+    lt->lights[1].dir.x = ZL_FX_ONE; /* fill light from the right and behind */
+    lt->lights[1].dir.y = ZL_FX_ONE / 4;
+    lt->lights[1].dir.z = -ZL_FX_ONE;
+    lt->lights[1].diffuse.r = 40;
+    lt->lights[1].diffuse.g = 60;
+    lt->lights[1].diffuse.b = 110;
+    s->normals = bunny_normals;
+    s->lit = bunny_lit;
+    if (zl_light_vertices(lt, &s->modelview, &s->mesh, s->normals, s->lit) != ZL_OK)
+        return -1;
+    s->mesh.vertex_colors = s->lit;
     return 0;
 }
 
@@ -96,6 +143,8 @@ int scene_make(scene *s, int which)
         s->state.color.b = 250;
         identity_like(&s->mvp, ZL_FX_ONE / 32, -ZL_FX_ONE, ZL_FX_ONE / 2);
         return 0;
+    case SCENE_BUNNY_SMOOTH:
+        return bunny_smooth(s);
     case SCENE_TETRA: {
         zl_vec3 eye = {ZL_FX_ONE / 5, ZL_FX_ONE / 10, ZL_FX_ONE * 2 / 5}; /* inside the model's hull: near clipping */
         s->name = "tetra";

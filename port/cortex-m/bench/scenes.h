@@ -12,6 +12,12 @@
  *   fill_gouraud the same with a colour per vertex, Gouraud shaded
  *   tris         triangle rate: a 64 x 64 grid, 8192 triangles of about 9
  *                pixels, covering the screen once, flat colour
+ *   bunny_smooth (golden test and bench_smooth.c) the bunny's camera with
+ *                smooth lighting (zl_light_vertices, issue 15): area-weighted
+ *                normals from zline-obj2c, a key light with white Blinn-Phong
+ *                specular (exponent 24) and a blue fill light, both in eye
+ *                space (brought to model space by the view matrix), the lit
+ *                vertex colours Gouraud-interpolated
  *   tetra        (golden test only) a vertex-coloured model close to the
  *                camera: near-plane clipping and Gouraud shading
  * The meshes are const (flash): bunny, grid and tetra are generated from OBJ
@@ -25,7 +31,7 @@
 #define SCENE_W 320
 #define SCENE_H 240
 
-enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_TETRA, SCENE_COUNT };
+enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_TETRA, SCENE_BUNNY_SMOOTH, SCENE_COUNT };
 
 typedef struct {
     const char *name;
@@ -33,6 +39,13 @@ typedef struct {
     zl_mat4 mvp;
     zl_state state;
     uint8_t gouraud; /* the scanline frame must reserve Gouraud records */
+    /* SCENE_BUNNY_SMOOTH: mesh.vertex_colors = lit, made by
+     * zl_light_vertices(&lighting, &modelview, mesh without vertex colours,
+     * normals, lit) in scene_make (lit is a static array of scenes.c) */
+    zl_lighting lighting;
+    zl_mat4 modelview;
+    const int16_t *normals;
+    uint8_t *lit;
 } scene;
 
 /* Build scene `which` (SCENE_*). Returns 0, or -1 if the camera cannot be built. */

@@ -9,6 +9,7 @@
 
 #include "bunny_mesh.h"
 #include "tetra_mesh.h"
+#include "bunny_n_mesh.h"
 #include "tetra_nc_mesh.h"
 #include "unity.h"
 #include "zl_obj.h"
@@ -50,6 +51,24 @@ static void test_bunny_normalized(void)
     TEST_ASSERT_EQUAL_INT(0, BUNNY_HAS_VERTEX_COLORS);
 }
 
+/* --normals angle: the loader's angle-weighted normals, and the same mesh */
+static void test_bunny_normals(void)
+{
+    zl_obj obj;
+    zl_obj_options opt;
+    char msg[256];
+    uint32_t k;
+    TEST_ASSERT_EQUAL_INT(1, BUNNY_N_HAS_NORMALS);
+    check(bunny_path, 1, &bunny_n_mesh, BUNNY_N_VERTEX_COUNT, BUNNY_N_TRIANGLE_COUNT, 0);
+    zl_obj_options_default(&opt);
+    opt.normalize = 1;
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_file(&obj, bunny_path, &opt, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_compute_normals(&obj, ZL_OBJ_NORMALS_ANGLE));
+    for (k = 0; k < 3 * BUNNY_N_VERTEX_COUNT; k++)
+        TEST_ASSERT_EQUAL_INT(obj.normals[k], bunny_n_normals[k]);
+    zl_obj_free(&obj);
+}
+
 static void test_tetra_with_colors(void)
 {
     /* a quad and a negative index in the file: 5 triangles in all */
@@ -77,6 +96,7 @@ int main(int argc, char **argv)
     tetra_path = argv[2];
     UNITY_BEGIN();
     RUN_TEST(test_bunny_normalized);
+    RUN_TEST(test_bunny_normals);
     RUN_TEST(test_tetra_with_colors);
     RUN_TEST(test_tetra_without_colors);
     return UNITY_END();

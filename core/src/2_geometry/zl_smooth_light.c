@@ -1,0 +1,297 @@
+/*
+ * Stage 2, geometry: smooth (per-vertex) lighting, the SMOOTH LIGHTING
+ * equation of zline.h. Once per call the lights are brought into model space
+ * (the adjugate of the model matrix's 3x3, so no per-vertex inverse) as Q30
+ * unit vectors, with their Blinn-Phong half vectors; then each vertex costs
+ * one square root and one division (its normal made a Q30 unit vector) and,
+ * per light, two 64-bit dot products and the specular power.
+ *
+ * Error budget (what the bound of zline.h rests on): unit vectors are within
+ * a few 2^-30 of exact, so cosines are too and x^e (e <= 128) within
+ * 2^-22; the diffuse and specular factors are rounded to Q12 (2^-13 each, at
+ * most 4 lights x 255 / 2^13 = 0.125 of a colour step each for diffuse and
+ * specular) and the final rounding adds 1/2: below 0.76 in all.
+ */
+#include "zl_geometry.h"
+
+#define Q30 ((int64_t)1 << 30)
+
+/* Per-light numbers, prepared once per call. */
+typedef struct {
+    int32_t l[3], h[3];   /* model-space unit light and half vectors, Q30 */
+    uint32_t d[3], s[3];  /* diffuse and specular colour */
+    int spec;             /* the light has a specular colour and a half vector */
+} sl_light;
+
+/* Bit length of a non-zero magnitude. */
+static unsigned bits64(uint64_t v)
+{
+    unsigned n = 0;
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+
+static uint64_t mag64(int64_t v)
+{
+    return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
+}
+
+/* Scale v[0..2] by one power of two so the largest magnitude has `bits`
+ * bits (left: exact; right: floor). 0 when every component is 0. */
+static int scale3(int64_t *v, unsigned bits)
+{
+    uint64_t big = mag64(v[0]) | mag64(v[1]) | mag64(v[2]);
+    unsigned len, k;
+    if (big == 0)
+        return 0;
+    len = bits64(big);
+    for (k = 0; k < 3; k++) {
+        if (len > bits)
+            v[k] = zl_floor_shift64(v[k], len - bits);
+        else
+            v[k] = v[k] * ((int64_t)1 << (bits - len)); /* |v| < 2^bits after: no overflow */
+    }
+    return 1;
+}
+
+/* v / |v| as Q30; 0 when v is zero. */
+static int unit30(const int64_t *vin, int32_t *out)
+{
+    int64_t v[3];
+    uint64_t sq;
+    uint32_t len;
+    unsigned k;
+    v[0] = vin[0];
+    v[1] = vin[1];
+    v[2] = vin[2];
+    if (!scale3(v, 30)) /* |v_k| < 2^30, so the squares sum below 3 * 2^60 */
+        return 0;
+    sq = (uint64_t)(v[0] * v[0]) + (uint64_t)(v[1] * v[1]) + (uint64_t)(v[2] * v[2]);
+    len = zl_isqrt64(sq); /* >= 2^29: the largest component has 30 bits */
+    for (k = 0; k < 3; k++)
+        out[k] = (int32_t)zl_round_div64(v[k] * Q30, (int64_t)len); /* |v_k| 2^30 < 2^60 */
+    return 1;
+}
+
+/* The model matrix's 3x3 as an inverse up to a positive factor: the
+ * adjugate times the sign of the determinant. Entries are first scaled to
+ * 20 bits so that cofactors (2^41) and the determinant (3 x 2^61) fit. */
+static int inverse_dir(const zl_mat4 *model, int64_t inv[9])
+{
+    int64_t a[9], det;
+    uint64_t big = 0;
+    unsigned len, k;
+    if (model == NULL) {
+        for (k = 0; k < 9; k++)
+            inv[k] = (k % 4u == 0) ? 1 : 0;
+        return 1;
+    }
+    for (k = 0; k < 9; k++) {
+        a[k] = model->m[(k / 3u) * 4u + k % 3u];
+        big |= mag64(a[k]);
+    }
+    if (big == 0)
+        return 0;
+    len = bits64(big);
+    for (k = 0; k < 9; k++)
+        a[k] = len > 20 ? zl_floor_shift64(a[k], len - 20) : a[k] * ((int64_t)1 << (20 - len));
+    /* inv = adj(a): inv[r][c] = cofactor(c, r) */
+    inv[0] = a[4] * a[8] - a[5] * a[7];
+    inv[1] = a[2] * a[7] - a[1] * a[8];
+    inv[2] = a[1] * a[5] - a[2] * a[4];
+    inv[3] = a[5] * a[6] - a[3] * a[8];
+    inv[4] = a[0] * a[8] - a[2] * a[6];
+    inv[5] = a[2] * a[3] - a[0] * a[5];
+    inv[6] = a[3] * a[7] - a[4] * a[6];
+    inv[7] = a[1] * a[6] - a[0] * a[7];
+    inv[8] = a[0] * a[4] - a[1] * a[3];
+    det = a[0] * inv[0] + a[1] * inv[3] + a[2] * inv[6];
+    if (det == 0)
+        return 0;
+    if (det < 0)
+        for (k = 0; k < 9; k++)
+            inv[k] = -inv[k];
+    return 1;
+}
+
+/* unit(inv * v) as Q30 for a direction v of the lights' space (any int64
+ * components; scaled to 20 bits first so the products stay below 2^62). */
+static int to_model(const int64_t inv[9], const int64_t *vin, int32_t *out)
+{
+    int64_t v[3], t[3];
+    unsigned r;
+    v[0] = vin[0];
+    v[1] = vin[1];
+    v[2] = vin[2];
+    if (!scale3(v, 20))
+        return 0;
+    for (r = 0; r < 3; r++)
+        t[r] = inv[r * 3] * v[0] + inv[r * 3 + 1] * v[1] + inv[r * 3 + 2] * v[2];
+    return unit30(t, out);
+}
+
+static int prepare(const zl_lighting *lt, const zl_mat4 *model, sl_light *pl)
+{
+    int64_t inv[9], view[3], vv[3];
+    int32_t vu[3];
+    unsigned i, k;
+    int have_view;
+    if (!inverse_dir(model, inv))
+        return 0;
+    view[0] = lt->viewer.x;
+    view[1] = lt->viewer.y;
+    view[2] = lt->viewer.z;
+    have_view = unit30(view, vu);
+    for (i = 0; i < lt->light_count; i++) {
+        const zl_light *L = &lt->lights[i];
+        int64_t l[3];
+        int32_t lu[3];
+        l[0] = L->dir.x;
+        l[1] = L->dir.y;
+        l[2] = L->dir.z;
+        if (!unit30(l, lu) || !to_model(inv, l, pl[i].l))
+            return 0;
+        pl[i].d[0] = L->diffuse.r;
+        pl[i].d[1] = L->diffuse.g;
+        pl[i].d[2] = L->diffuse.b;
+        pl[i].s[0] = L->specular.r;
+        pl[i].s[1] = L->specular.g;
+        pl[i].s[2] = L->specular.b;
+        pl[i].spec = 0;
+        if ((L->specular.r | L->specular.g | L->specular.b) == 0)
+            continue;
+        if (!have_view)
+            return 0;
+        for (k = 0; k < 3; k++)
+            vv[k] = (int64_t)lu[k] + vu[k];
+        pl[i].spec = to_model(inv, vv, pl[i].h); /* 0: half vector of zero, no specular */
+    }
+    return 1;
+}
+
+/* x^e for x in [0, 1] as Q30, by squaring: each product rounded. */
+static uint32_t pow30(uint32_t x, unsigned e)
+{
+    uint32_t r = (uint32_t)Q30;
+    while (e != 0) {
+        if (e & 1u)
+            r = (uint32_t)(((uint64_t)r * x + (1u << 29)) >> 30);
+        e >>= 1;
+        if (e != 0)
+            x = (uint32_t)(((uint64_t)x * x + (1u << 29)) >> 30);
+    }
+    return r;
+}
+
+/* n . u for a Q30 unit normal and unit vector, as a Q30 cosine clamped to
+ * [0, 1] (0 for a negative one). */
+static uint32_t cos30(const int32_t *n, const int32_t *u)
+{
+    int64_t dot = (int64_t)n[0] * u[0] + (int64_t)n[1] * u[1] + (int64_t)n[2] * u[2]; /* |.| < 3 * 2^60 */
+    int64_t c;
+    if (dot <= 0)
+        return 0;
+    c = (dot + ((int64_t)1 << 29)) >> 30; /* dot > 0: the shift is a floor */
+    return c > Q30 ? (uint32_t)Q30 : (uint32_t)c;
+}
+
+/*
+ * The normal as a Q30 unit vector; 0 for a zero normal. The normal is first
+ * scaled so its largest component has 15 or 16 bits (exact), so |n| is in
+ * [2^14, 2^15 sqrt 3]; the square root, isqrt plus one Newton step, is
+ * |n| 2^16 within a few units, and one reciprocal serves the three
+ * components.
+ */
+static int normal30(const int16_t *nin, int32_t *u)
+{
+    int32_t n[3];
+    uint32_t big, q, r0, r16, rec;
+    unsigned k, sh = 0;
+    n[0] = nin[0];
+    n[1] = nin[1];
+    n[2] = nin[2];
+    big = abs32(n[0]) | abs32(n[1]) | abs32(n[2]);
+    if (big == 0)
+        return 0;
+    while ((big << sh) < (1u << 14))
+        sh++;
+    for (k = 0; k < 3; k++)
+        n[k] *= (int32_t)1 << sh; /* |n_k| <= 2^15 */
+    q = (uint32_t)(n[0] * n[0]) + (uint32_t)(n[1] * n[1]) + (uint32_t)(n[2] * n[2]); /* <= 3 * 2^30 */
+    r0 = zl_isqrt32(q);                                                                 /* >= 2^14 */
+    /* |n| = r0 + f, f in [0, 1): f ~ (q - r0^2) / (2 r0); q - r0^2 <= 2 r0 < 2^17 */
+    r16 = r0 * 65536u + ((q - r0 * r0) * 32768u) / r0;
+    rec = zl_udiv64_32((uint64_t)1 << 61, r16, NULL); /* 2^45 / |n|, below 2^31 */
+    for (k = 0; k < 3; k++)
+        u[k] = (int32_t)zl_floor_shift64((int64_t)n[k] * rec + (1 << 14), 15);
+    return 1;
+}
+
+zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const zl_mesh *mesh,
+                            const int16_t *normals, uint8_t *colors)
+{
+    sl_light pl[ZL_MAX_LIGHTS];
+    const uint8_t *vc;
+    uint32_t v, count;
+    unsigned i, k, nl;
+    if (lt == NULL || mesh == NULL)
+        return ZL_ERR_ARG;
+    if (lt->light_count > ZL_MAX_LIGHTS || lt->shininess > ZL_MAX_SHININESS)
+        return ZL_ERR_RANGE;
+    count = mesh->vertex_count;
+    if (count != 0 && (normals == NULL || colors == NULL))
+        return ZL_ERR_ARG;
+    if (!prepare(lt, model, pl))
+        return ZL_ERR_RANGE;
+    nl = lt->light_count;
+    vc = mesh->vertex_colors;
+    for (v = 0; v < count; v++) {
+        int32_t u[3];
+        uint32_t d12[ZL_MAX_LIGHTS], s12[ZL_MAX_LIGHTS];
+        const uint8_t *mat = vc != NULL ? &vc[v * 3u] : NULL;
+        int lit = normal30(&normals[v * 3u], u);
+        for (i = 0; i < nl; i++) {
+            uint32_t d = lit ? cos30(u, pl[i].l) : 0;
+            d12[i] = (d + (1u << 17)) >> 18;
+            s12[i] = 0;
+            if (d != 0 && pl[i].spec) {
+                uint32_t x = cos30(u, pl[i].h);
+                s12[i] = (pow30(x, lt->shininess) + (1u << 17)) >> 18;
+            }
+        }
+        for (k = 0; k < 3; k++) {
+            uint32_t m = mat != NULL ? mat[k] : (k == 0 ? lt->material.r : k == 1 ? lt->material.g : lt->material.b);
+            uint32_t f = (k == 0 ? lt->ambient.r : k == 1 ? lt->ambient.g : lt->ambient.b) * 4096u, c;
+            for (i = 0; i < nl; i++)
+                f += pl[i].d[k] * d12[i]; /* below 5 * 255 * 2^12 < 2^23 */
+            c = (m * f + 127u) / 255u; /* m f < 2^31 */
+            for (i = 0; i < nl; i++)
+                c += pl[i].s[k] * s12[i];
+            c = (c + 2048u) >> 12;
+            colors[v * 3u + k] = (uint8_t)(c > 255u ? 255u : c);
+        }
+    }
+    return ZL_OK;
+}
+
+void zl_lighting_default(zl_lighting *lt)
+{
+    unsigned i;
+    lt->ambient.r = lt->ambient.g = lt->ambient.b = 51;
+    lt->material.r = lt->material.g = lt->material.b = 255;
+    lt->light_count = 0;
+    lt->shininess = 0;
+    lt->viewer.x = 0;
+    lt->viewer.y = 0;
+    lt->viewer.z = ZL_FX_ONE;
+    for (i = 0; i < ZL_MAX_LIGHTS; i++) {
+        lt->lights[i].dir.x = 0;
+        lt->lights[i].dir.y = 0;
+        lt->lights[i].dir.z = ZL_FX_ONE;
+        lt->lights[i].diffuse.r = lt->lights[i].diffuse.g = lt->lights[i].diffuse.b = 255;
+        lt->lights[i].specular.r = lt->lights[i].specular.g = lt->lights[i].specular.b = 0;
+    }
+}
