@@ -83,12 +83,15 @@ static int check_budget(const char *scene_name, uint32_t total)
 /* Issue 4's target for the benchmark scene at -O2: at most 1.69 M
  * instructions for a frame (clear + transform + draw). The frame with the
  * vertex cache must stay under it; unlike a budget this bound does not move
- * with the measurement. */
+ * with the measurement. It is a Cortex-M4 figure: another instruction set
+ * (port/riscv) builds with -DBUNNY_TARGET_O2=0, no target, budgets only. */
+#ifndef BUNNY_TARGET_O2
 #define BUNNY_TARGET_O2 1690000ul
+#endif
 
 static int check_target(const char *scene_name, uint32_t total)
 {
-    if (strcmp(BENCH_TAG, "frame-O2") != 0 || strcmp(scene_name, "bunny") != 0)
+    if (BUNNY_TARGET_O2 == 0 || strcmp(BENCH_TAG, "frame-O2") != 0 || strcmp(scene_name, "bunny") != 0)
         return 0;
     if (total > BUNNY_TARGET_O2) {
         printf("TARGET FAIL %s %s: %lu instructions with the vertex cache, target %lu\n", BENCH_TAG, scene_name,
