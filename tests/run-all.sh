@@ -3,6 +3,7 @@
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
+#      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
 #      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
@@ -30,10 +31,16 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
         -DZLINE_CPU="$cpu"
 done
+# --- RISC-V (port/riscv, issue 17): the portable suite, the golden scenes
+# (host equals target) and the benchmark budgets on rv32imac under
+# qemu-system-riscv32 (virt).
+run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake \
+    -DZLINE_RISCV_ARCH=rv32imac
+# --- end RISC-V
 echo "=== static analysis"
 sh tools/lint/run.sh
 echo "=== fuzzing, ${FUZZ_SECONDS:-60} s per target"
 sh tests/fuzz/run.sh build/ci-fuzz
 echo "=== all test suites passed"
-# The plain closing line: CTest tests of all five builds (lint and fuzz runs not counted).
+# The plain closing line: CTest tests of all builds (lint and fuzz runs not counted).
 echo "zline: $total passed, 0 failed"

@@ -2,10 +2,12 @@
 # Install what zline's build, tests and tools need on Debian (12 or later).
 # Everything comes from Debian's own archive. clang and libclang-rt-dev (libFuzzer,
 # sanitizer runtimes) build the fuzz targets; clang-tidy and cppcheck are the
-# static analysers of tools/lint/run.sh.
+# static analysers of tools/lint/run.sh. gcc-riscv64-unknown-elf, picolibc and
+# qemu-system-misc (qemu-system-riscv32) build and run the RISC-V port.
 set -eu
 pkgs="cmake make gcc libc6-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
-qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck"
+qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck
+gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc"
 missing=""
 for p in $pkgs; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
