@@ -80,7 +80,7 @@ done >"$out/results.txt"
 
 R=$out/results.txt
 get() { awk -v t="$1" -v s="$2" -v k="$3" '$1 == t && $2 == s && $3 == k { print $4; exit }' "$R"; }
-num() { awk -v v="$1" 'BEGIN { if (v == "") print "n/a"; else { s = sprintf("%d", v); o = ""; while (length(s) > 3) { o = "," substr(s, length(s) - 2) o; s = substr(s, 1, length(s) - 3) } print s o } }'; }
+num() { awk -v v="$1" 'BEGIN { if (v == "") print "n/a"; else { g = v < 0 ? "-" : ""; s = sprintf("%d", v < 0 ? -v : v); o = ""; while (length(s) > 3) { o = "," substr(s, length(s) - 2) o; s = substr(s, 1, length(s) - 3) } print g s o } }'; }
 div() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || b == 0) print "n/a"; else printf "%.1f", a / b }'; }
 scenes="bunny fill fill_gouraud tris"
 
@@ -101,6 +101,21 @@ echo "|---|---|---:|---:|---:|"
 for s in $scenes; do
     for opt in O2 Os; do
         echo "| $s | -$opt | $(num "$(get frame-$opt $s total)") | $(num "$(get frame-$opt $s total_vcache)") | $(num "$(get scanline-$opt $s total)") |"
+    done
+done
+echo
+echo "### Frame mode by phase, $arch (instructions; the stages run separately, see bench.c)"
+echo
+echo "| scene | opt | clear | transform/clip | setup | rasterisation | other | transform/clip per triangle | setup per drawn triangle | rasterisation per pixel |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+for s in $scenes; do
+    for opt in O2 Os; do
+        tag=frame-$opt
+        v1=$(get $tag $s v1_polygons); v2=$(get $tag $s v2_setup); v3=$(get $tag $s v3_rows)
+        draw=$(get $tag $s draw); clear=$(get $tag $s clear)
+        tris=$(get $tag $s triangles); drawn=$(get $tag $s drawn); px=$(get $tag $s pixels)
+        setup=$((v2 - v1)); raster=$((v3 - v2)); other=$((draw - v3))
+        echo "| $s | -$opt | $(num $clear) | $(num $v1) | $(num $setup) | $(num $raster) | $(num $other) | $(div $v1 $tris) | $(div $setup $drawn) | $(div $raster $px) |"
     done
 done
 echo
