@@ -22,7 +22,8 @@ mkdir -p "$out"
 
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake \
     -DZLINE_RISCV_ARCH="$arch" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os >/dev/null
+cmake --build "$build" -j 2 --target bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os \
+    bench_features_O2 bench_features_Os bench_vis_O2 >/dev/null
 # The QEMU command CTest uses (the toolchain file's CMAKE_CROSSCOMPILING_EMULATOR).
 emulator=$(cat "$build/port/riscv/qemu-command")
 
@@ -39,6 +40,12 @@ for tag in $tags; do
     # shellcheck disable=SC2086 # the command line splits on spaces
     $emulator "$elf" >"$out/$tag.txt" || status=1
     riscv64-unknown-elf-size -A "$elf" >"$out/$tag.size"
+done
+# The per-pixel loops of lines and textures (bench_features.c) and one bunny
+# frame per visibility method (bench_vis.c).
+for b in features-O2 features-Os vis-O2; do
+    # shellcheck disable=SC2086
+    $emulator "$bench/bench_${b%-*}_${b#*-}.elf" >"$out/$b.txt" || status=1
 done
 [ $status -eq 0 ] || echo "measure.sh: a benchmark reported a failure (BUDGET FAIL?): see $out/*.txt" >&2
 
@@ -126,5 +133,27 @@ echo "|---|---:|---:|---:|---:|---:|"
 for tag in $tags; do
     stack=$(awk -v t="$tag" '$1 == t && $3 == "stack" && $4 > m { m = $4 } END { print m }' "$R")
     echo "| bench_${tag%-*}_${tag#*-} | $(num "$(get $tag - flash_core)") | $(num "$(get $tag - flash_meshes)") | $(num "$(get $tag - flash_elf)") | $(num "$(get $tag - ram_data_bss)") | $(num "$stack") |"
+done
+echo
+echo "### Instructions per pixel of the line and texture loops, $arch (bench_features.c, whole draw call / pixels)"
+echo
+echo "| loop | -O2 | -Os |"
+echo "|---|---:|---:|"
+for f in line line_aa flat tex_affine tex_persp tex_persp16; do
+    per() { awk -v f="$f" '$1 == "FEATURE" && $3 == f { printf "%.1f", $6 / 100; exit }' "$out/features-$1.txt"; }
+    echo "| $f | $(per O2) | $(per Os) |"
+done
+echo
+echo "### Visibility methods, $arch (bunny, -O2)"
+echo
+echo "One frame of the bunny benchmark scene per method (bench_vis.c), as in docs/VISIBILITY.md."
+echo
+echo "| method | instructions per frame | RAM bytes | of which work buffer |"
+echo "|---|---:|---:|---:|"
+for m in zbuffer scanline aet painter bsp-b2f bsp-f2b raycast; do
+    t=$(awk -v m="$m" '$1 == "INTERVAL" && $3 == m && $4 == "total" { print $5; exit }' "$out/vis-O2.txt")
+    r=$(awk -v m="$m" '$1 == "RESULT" && $3 == m && $4 == "ram_bytes" { print $5; exit }' "$out/vis-O2.txt")
+    w=$(awk -v m="$m" '$1 == "RESULT" && $3 == m && $4 == "work_bytes" { print $5; exit }' "$out/vis-O2.txt")
+    echo "| $m | $(num "$t") | $(num "$r") | $(num "$w") |"
 done
 exit $status
