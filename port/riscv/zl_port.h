@@ -16,7 +16,8 @@ extern "C" {
 
 /*
  * Stack high-water mark by painting. The program stack is picolibc's: the
- * top __stack_size bytes of RAM (virt.ld), from __heap_end up to __stack.
+ * top __stack_size bytes of RAM (virt.ld), from __heap_end up to __stack,
+ * less a 4 KiB no-access guard at its bottom (stack.c).
  *
  * zl_port_stack_paint() fills the unused part of the stack (below the
  * caller's frame) with a pattern and returns the bytes in use at the call.

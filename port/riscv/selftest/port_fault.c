@@ -9,7 +9,18 @@
 #include <stdio.h>
 
 #ifndef PORT_FAULT
-#error "define PORT_FAULT: 1 illegal instruction, 2 load from unmapped memory, 3 store to unmapped memory"
+#error "define PORT_FAULT: 1 illegal instruction, 2 load from unmapped memory, 3 store to unmapped memory, 4 stack overflow"
+#endif
+
+#if PORT_FAULT == 4
+volatile int limit = 1 << 30;
+
+static int __attribute__((noinline)) recurse(int n)
+{
+    volatile uint8_t frame[256];
+    frame[0] = (uint8_t)n;
+    return n < limit ? recurse(n + 1) + frame[0] : 0;
+}
 #endif
 
 volatile uintptr_t unmapped_address = 16u;
@@ -26,6 +37,8 @@ int main(void)
     return (int)*unmapped;
 #elif PORT_FAULT == 3
     *unmapped = 1;
+#elif PORT_FAULT == 4
+    return recurse(0); /* runs into the stack guard (stack.c) */
 #endif
     (void)unmapped;
     return 0; /* reaching this fails the test: no report in the output */
