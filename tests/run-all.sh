@@ -11,6 +11,7 @@
 #       each must make the host suite fail
 #      (and, issue 11: for the hard-float M4F and M7, M33 and M55 on their
 #      boards; then the consumer tests of tests/consumer/run.sh)
+#      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
 #      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
@@ -46,6 +47,12 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     run "$cpu" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
         -DZLINE_CPU="$cpu"
 done
+# --- RISC-V (port/riscv, issue 17): the portable suite, the golden scenes
+# (host equals target) and the benchmark budgets on rv32imac under
+# qemu-system-riscv32 (virt).
+run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake \
+    -DZLINE_RISCV_ARCH=rv32imac
+# --- end RISC-V
 # --- issue 11: real-part Cortex-M targets and consumer tests ------------------
 # The suite on the hard-float parts, each on its QEMU board: Cortex-M4F
 # (mps2-an386) and M7 (mps2-an500) whole; M33 (mps2-an505) and M55

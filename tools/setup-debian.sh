@@ -4,10 +4,13 @@
 # sanitizer runtimes) build the fuzz targets; clang-tidy and cppcheck are the
 # static analysers of tools/lint/run.sh. python3 drives QEMU's display for the
 # LM3S6965 OLED test; imagemagick makes the README's frames from its captures.
+# gcc-riscv64-unknown-elf, picolibc and qemu-system-misc (qemu-system-riscv32)
+# build and run the RISC-V port.
 set -eu
 pkgs="cmake make gcc libc6-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
 qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck
-python3 imagemagick"
+python3 imagemagick
+gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc"
 # Consumer tests (tests/consumer): pkg-config, and g++ for the C++ header build.
 pkgs="$pkgs pkg-config g++"
 missing=""

@@ -2,10 +2,13 @@
 """Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
 
     python3 tools/docs/refresh.py [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
+                                  [--riscv BUILD_DIR] [--riscv-only]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
 KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny and
-tools/visbench/measure.sh (a host build with the render command's targets, and valgrind), splits their output into sections ("### title"
+tools/visbench/measure.sh (a host build with the render command's targets, and valgrind), with
+--riscv also port/riscv/bench/measure.sh (rv32imac; --riscv-only: that alone, build/rv32imac-bench
+unless --riscv names one), splits their output into sections ("### title"
 plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
@@ -20,7 +23,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DOCS = ["README.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md"]
+DOCS = ["README.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md", "port/riscv/README.md"]
 # README visibility table row -> bench_vis.c method
 VIS_ROWS = {
     "z-buffer, frame mode": "zbuffer",
@@ -117,22 +120,35 @@ def refresh(doc, secs, vis):
 
 
 def main():
-    build, host = "build/cortex-m4-bench", None
+    build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
     args = sys.argv[1:]
-    while len(args) >= 2 and args[0] in ("--cortex-m", "--host"):
+    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only"):
+        if args[0] == "--riscv-only":
+            cortex_m, riscv = False, riscv or "build/rv32imac-bench"
+            args = args[1:]
+            continue
+        if len(args) < 2:
+            sys.exit(f"refresh.py: {args[0]} needs a build directory")
         if args[0] == "--cortex-m":
             build = args[1]
-        else:
+        elif args[0] == "--host":
             host = args[1]
+        else:
+            riscv = args[1]
         args = args[2:]
-    text = run(["sh", "port/cortex-m/bench/measure.sh", build])
+    text = ""
+    if cortex_m:
+        text += run(["sh", "port/cortex-m/bench/measure.sh", build])
     if host:
         text += "\n" + run(["sh", "tools/bench/measure.sh", host, "port/host/models/bunny.obj"])
         text += "\n" + run(["sh", "tools/visbench/measure.sh", host])
-    text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
-    vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
-    vc = vc.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")
-    text += "\n" + vc
+    if riscv:
+        text += "\n" + run(["sh", "port/riscv/bench/measure.sh", "rv32imac", riscv])
+    if cortex_m:
+        text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
+        vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
+        vc = vc.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")
+        text += "\n" + vc
     secs = sections(text)
     vis = {}
     for row in secs.get("Visibility methods on Cortex-M4 (bunny, -O2)", [])[2:]:

@@ -83,12 +83,15 @@ static int check_budget(const char *scene_name, uint32_t total)
 /* Issue 4's target for the benchmark scene at -O2: at most 1.69 M
  * instructions for a frame (clear + transform + draw). The frame with the
  * vertex cache must stay under it; unlike a budget this bound does not move
- * with the measurement. */
+ * with the measurement. It is a Cortex-M4 figure: another instruction set
+ * (port/riscv) builds with -DBUNNY_TARGET_O2=0, no target, budgets only. */
+#ifndef BUNNY_TARGET_O2
 #define BUNNY_TARGET_O2 1690000ul
+#endif
 
 static int check_target(const char *scene_name, uint32_t total)
 {
-    if (strcmp(BENCH_TAG, "frame-O2") != 0 || strcmp(scene_name, "bunny") != 0)
+    if (BUNNY_TARGET_O2 == 0 || strcmp(BENCH_TAG, "frame-O2") != 0 || strcmp(scene_name, "bunny") != 0)
         return 0;
     if (total > BUNNY_TARGET_O2) {
         printf("TARGET FAIL %s %s: %lu instructions with the vertex cache, target %lu\n", BENCH_TAG, scene_name,
@@ -98,6 +101,21 @@ static int check_target(const char *scene_name, uint32_t total)
     printf("TARGET ok %s %s: %lu <= %lu with the vertex cache\n", BENCH_TAG, scene_name, (unsigned long)total,
            BUNNY_TARGET_O2);
     return 0;
+}
+
+/* With BENCH_BUDGET_VCACHE (port/riscv, which has no fixed target) the frame
+ * with the vertex cache has its own budget too, "SCENE_vcache"; 1 when over. */
+static int check_vcache_budget(const char *scene_name, uint32_t total)
+{
+#ifdef BENCH_BUDGET_VCACHE
+    char name[40];
+    snprintf(name, sizeof name, "%s_vcache", scene_name);
+    return check_budget(name, total);
+#else
+    (void)scene_name;
+    (void)total;
+    return 0;
+#endif
 }
 
 /* Vertex cache for the cached frame-mode variant: up to 8192 vertices. */
@@ -206,6 +224,7 @@ static int run_scene(const scene *s)
     unsigned m;
     size_t base, stack;
     uint32_t counts[2] = {0, 0}, h_draw, h_staged, total;
+    int over_vcache;
     memset(&tg, 0, sizeof tg);
     tg.color = color_buf;
     tg.color_stride = W * 2;
@@ -245,6 +264,7 @@ static int run_scene(const scene *s)
     interval(s->name, "total_vcache", m, m + 1);
     if (check_target(s->name, bench_between(m, m + 1)) != 0)
         return 1;
+    over_vcache = check_vcache_budget(s->name, bench_between(m, m + 1));
     ctx.vertex_cache = NULL;
     ctx.vertex_cache_bytes = 0;
     if (fnv1a(depth_buf, sizeof depth_buf, fnv1a(color_buf, sizeof color_buf, 2166136261u)) != h_draw) {
@@ -280,7 +300,7 @@ static int run_scene(const scene *s)
         printf("bench: %s: the staged variant's image differs from zl_draw_mesh's\n", s->name);
         return 1;
     }
-    return check_budget(s->name, total);
+    return check_budget(s->name, total) + over_vcache;
 }
 
 #else
