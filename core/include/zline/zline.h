@@ -378,14 +378,51 @@ zl_status zl_state_check(const zl_state *s);
  * intensity 0..255 of the lighting rule (zl_state; 255 with the light off).
  * Its face colour is not used; Gouraud shading keeps its vertex colours.
  */
+/*
+ * TEXEL FORMATS AND SIZES (texture.format): ZL_TEXEL_RGB565 (the default,
+ * 0 after memset) or ZL_TEXEL_RGBA4444: one uint16 per texel in native
+ * byte order, red in bits 15..12, green 11..8, blue 7..4, alpha 3..0
+ * (OpenGL's GL_UNSIGNED_SHORT_4_4_4_4). A 4-bit channel v widens to 8 bits
+ * as v * 17 (0 -> 0, 15 -> 255), an RGB565 one by bit replication. RGBA4444
+ * rather than RGB565 plus a 1-bit key: the same 2 bytes per texel, and 16
+ * levels of alpha give soft edges, glass and fades, which a key cannot; a
+ * colour key is simply alpha 0 or 15. Width and height may be any size
+ * 1 .. 4096: repeat takes the index modulo the size (a mask for powers of
+ * two, which alone take the fast RGB565 span loop; other sizes divide per
+ * texel). Without blending the alpha of RGBA4444 texels is ignored.
+ *
+ * BLENDING (style.blend, per draw, filled triangles only): after the depth
+ *   test, with a = style.alpha (0..255) for RGB565 texels or no texture, and
+ *   a = round(style.alpha * texel_alpha / 255) for RGBA4444 texels,
+ *     ZL_BLEND_OFF    the fragment's colour is written (the default)
+ *     ZL_BLEND_ALPHA  new = round((src a + old (255 - a)) / 255)
+ *     ZL_BLEND_ADD    new = min(255, old + round(src a / 255))
+ *   per 8-bit channel; old is the pixel in the colour buffer (RGB565 widened
+ *   by bit replication), new is packed as any colour is (RGB565 keeps the
+ *   top bits), and the colour mask applies. A fragment with a = 0 is
+ *   discarded (neither colour nor depth written), so cut-out texels leave
+ *   holes even with depth writes on. Depth is written as the state says.
+ *   Lines and points are not blended. Frame and scanline/band modes give the
+ *   same bytes (triangles blend in submission order in both); in scanline
+ *   mode blending needs cfg.styled and cfg.textured (it uses the styled rows).
+ *   Transparent geometry: draw the opaque meshes first (depth test and
+ *   writes on), then the transparent ones with depth_write = 0 and their
+ *   triangles in back-to-front order by the painter's key of
+ *   zl_visibility.h (the farthest vertex's window depth, far first), so each
+ *   blends over what is behind it and none hides another (ALPHA is order
+ *   dependent; ADD is not).
+ */
 typedef enum { ZL_WRAP_REPEAT = 0, ZL_WRAP_CLAMP = 1 } zl_wrap;
 typedef enum { ZL_TEX_AFFINE = 0, ZL_TEX_PERSPECTIVE = 1 } zl_tex_mapping;
+typedef enum { ZL_TEXEL_RGB565 = 0, ZL_TEXEL_RGBA4444 = 1 } zl_texel_format;
+typedef enum { ZL_BLEND_OFF = 0, ZL_BLEND_ALPHA = 1, ZL_BLEND_ADD = 2 } zl_blend;
 
 typedef struct {
-    const uint16_t *texels; /* RGB565, native byte order */
-    uint16_t width, height; /* powers of two, 1 .. 4096 */
+    const uint16_t *texels; /* zl_texel_format, native byte order */
+    uint16_t width, height; /* 1 .. 4096 (powers of two are faster) */
     uint16_t stride;        /* texels from one row to the next, >= width */
     uint8_t wrap_s, wrap_t; /* zl_wrap */
+    uint8_t format;         /* zl_texel_format (0: RGB565) */
 } zl_texture;
 
 typedef enum {
@@ -437,6 +474,8 @@ typedef struct {
     uint8_t toon_bands;         /* toon shading: 0 off, else 1 .. 255 bands (see TOON) */
     const zl_rgb *toon_colors;  /* toon_bands colours, darkest band first */
     uint8_t line_aa;            /* 1: antialiased lines (see ANTIALIASED LINES) */
+    uint8_t blend;              /* zl_blend of filled triangles (see BLENDING) */
+    uint8_t alpha;              /* constant alpha 0..255 of blending (default 255) */
 } zl_style;
 
 /*
@@ -476,7 +515,7 @@ typedef struct {
 } zl_outline;
 
 /* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset, no
- * texture, screen-linear Gouraud. */
+ * texture, screen-linear Gouraud, no blending (alpha 255). */
 void zl_style_default(zl_style *s);
 /* ZL_ERR_ARG for an unknown enum value, ZL_ERR_RANGE for a number outside its range. */
 zl_status zl_style_check(const zl_style *s);

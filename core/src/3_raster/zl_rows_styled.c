@@ -1,7 +1,7 @@
 /*
  * Stage 3, raster: rows of styled triangles (zl_tri_row_ex): textures,
- * affine or perspective-correct, perspective-correct Gouraud, and the
- * texel fetch with its wrap rule.
+ * affine or perspective-correct, perspective-correct Gouraud, the texel
+ * fetch with its wrap rule and texel formats, and blending.
  */
 #include <string.h>
 
@@ -9,13 +9,98 @@
 
 /* ------------------------------------------------- textures, perspective */
 
-/* One texel coordinate (1/256 texel) to a wrapped or clamped texel index. */
+/* One texel coordinate (1/256 texel) to a wrapped or clamped texel index,
+ * for a power-of-two size (the fast loop's textures). */
 static inline uint32_t texel_index(int64_t c8, uint16_t size, unsigned wrap)
 {
     int64_t i = zl_floor_shift64(c8, 8);
     if (wrap == ZL_WRAP_CLAMP)
         return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
     return (uint32_t)i & (uint32_t)(size - 1u); /* two's complement: modulo a power of two */
+}
+
+/* The same for any size 1 .. 4096: repeat is the non-negative remainder
+ * (C's % truncates towards zero, so a negative one moves up by size). */
+static inline uint32_t texel_index_any(int64_t c8, uint16_t size, unsigned wrap)
+{
+    int64_t i;
+    if ((size & (size - 1u)) == 0 || wrap == ZL_WRAP_CLAMP)
+        return texel_index(c8, size, wrap);
+    i = zl_floor_shift64(c8, 8) % (int64_t)size;
+    return (uint32_t)(i < 0 ? i + size : i);
+}
+
+static int is_pow2(uint16_t n)
+{
+    return (n & (n - 1u)) == 0;
+}
+
+/* round(x / 255) for 0 <= x <= 255 * 255, without a division. */
+static inline unsigned div255(unsigned x)
+{
+    x += 128u;
+    return (x + (x >> 8)) >> 8;
+}
+
+/* A texel as 8-bit r, g, b and alpha (255 for RGB565). */
+static void unpack_texel(uint16_t t, unsigned format, unsigned *r, unsigned *g, unsigned *b, unsigned *a)
+{
+    if (format == ZL_TEXEL_RGBA4444) {
+        *r = (unsigned)(t >> 12) * 17u;
+        *g = (unsigned)((t >> 8) & 15u) * 17u;
+        *b = (unsigned)((t >> 4) & 15u) * 17u;
+        *a = (unsigned)(t & 15u) * 17u;
+    } else {
+        unsigned r5 = t >> 11, g6 = (t >> 5) & 63u, b5 = t & 31u;
+        *r = (r5 << 3) | (r5 >> 2);
+        *g = (g6 << 2) | (g6 >> 4);
+        *b = (b5 << 3) | (b5 >> 2);
+        *a = 255;
+    }
+}
+
+/* Alpha of a blended fragment: the constant, times the texel's alpha for
+ * RGBA4444 textures. */
+static unsigned frag_alpha(unsigned alpha, const zl_texture *tex, int64_t u8, int64_t v8)
+{
+    uint16_t tx;
+    if (tex == NULL || tex->format != ZL_TEXEL_RGBA4444)
+        return alpha;
+    tx = tex->texels[(size_t)texel_index_any(v8, tex->height, tex->wrap_t) * tex->stride +
+                     texel_index_any(u8, tex->width, tex->wrap_s)];
+    return div255(alpha * ((unsigned)(tx & 15u) * 17u));
+}
+
+/* Blend (r, g, b) with alpha a (1..255) into the pixel at p (see BLENDING
+ * in zline.h): the old pixel widened to 8 bits per channel, the result
+ * packed and written through the colour mask. */
+static void blend_pixel(uint8_t *p, const zl_span_state *ss, unsigned mode, const unsigned *src, unsigned a)
+{
+    unsigned old[3], out[3], k;
+    uint8_t pix[3] = {0, 0, 0};
+    if (ss->format == ZL_FORMAT_RGB888) {
+        old[0] = p[0];
+        old[1] = p[1];
+        old[2] = p[2];
+    } else {
+        uint16_t v;
+        unsigned a8;
+        if (ss->format == ZL_FORMAT_RGB565)
+            memcpy(&v, p, 2);
+        else
+            v = (uint16_t)(((unsigned)p[0] << 8) | p[1]);
+        unpack_texel(v, ZL_TEXEL_RGB565, &old[0], &old[1], &old[2], &a8);
+    }
+    for (k = 0; k < 3; k++) {
+        if (mode == ZL_BLEND_ADD) {
+            unsigned v = old[k] + div255(src[k] * a);
+            out[k] = v > 255u ? 255u : v;
+        } else {
+            out[k] = div255(src[k] * a + old[k] * (255u - a));
+        }
+    }
+    pack_color((zl_format)ss->format, out[0], out[1], out[2], pix);
+    put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
 /* (a q) / q for the perspective planes: one reciprocal R = 2^44 / Q and a
@@ -33,14 +118,6 @@ static inline uint64_t persp_recip(int64_t q)
 static inline int64_t persp_apply(int64_t a, uint64_t r)
 {
     return zl_floor_shift64(a * (int64_t)r, 20);
-}
-
-static void unpack565(uint16_t t, unsigned *r, unsigned *g, unsigned *b)
-{
-    unsigned r5 = t >> 11, g6 = (t >> 5) & 63u, b5 = t & 31u;
-    *r = (r5 << 3) | (r5 >> 2);
-    *g = (g6 << 2) | (g6 >> 4);
-    *b = (b5 << 3) | (b5 >> 2);
 }
 
 /* Whether an affine coordinate plane (Q12 texels, stepped per pixel) stays
@@ -113,7 +190,11 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
     const zl_texture *tex = sty->texcoords != NULL ? sty->texture : NULL;
     const int64_t f16 = 1 << (ZL_ATTR_FRAC - 16), big = (int64_t)1 << 40;
     int32_t x0 = t->left.x, x1 = t->right.x, i, n;
-    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE, pg = g != NULL && ss->gouraud;
+    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE, pg = g != NULL && ss->gouraud && sty->persp_gouraud;
+    int lg = g != NULL && ss->gouraud && !sty->persp_gouraud; /* screen-linear Gouraud (blending) */
+    unsigned blend = sty->blend;
+    uint32_t lc[3] = {0, 0, 0}, ldc[3] = {0, 0, 0};
+    unsigned a;
     unsigned every = sty->tex_every > 1 ? sty->tex_every : 1u, shift = 0, func = ss->func, light = t->light;
     uint32_t z, dz;
     int64_t U = 0, V = 0, Q, dU = 0, dV = 0, dQ, C[3] = {0, 0, 0}, dC[3] = {0, 0, 0};
@@ -145,11 +226,19 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
             C[k] = attr_at(&g->c[k], x0, t->ax, -big, big);
             dC[k] = g->c[k].dx;
         }
+    if (lg)
+        for (k = 0; k < 3; k++) {
+            /* as row_span's Gouraud span (zl_rows.c): Q16 steppers, rounding half added */
+            int64_t v = attr_at(&g->c[k], x0, t->ax, 0, (int64_t)255 << ZL_ATTR_FRAC);
+            lc[k] = (uint32_t)zl_floor_shift64(v, ZL_ATTR_FRAC - 16) + (1u << 15);
+            ldc[k] = step32(g->c[k].dx, ZL_ATTR_FRAC - 16);
+        }
     crow = crow ? crow + (size_t)x0 * ss->bpp : NULL;
     zrow = zrow ? zrow + x0 : NULL;
     if ((crow == NULL && ss->bpp != 0) || (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS)))
         return; /* as in row_span */
-    if (tex != NULL && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
+    if (tex != NULL && blend == ZL_BLEND_OFF && tex->format == ZL_TEXEL_RGB565 && is_pow2(tex->width) &&
+        is_pow2(tex->height) && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
         (persp || (affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
         /* The common case in its own loop: the texel is the pixel (RGB565,
@@ -181,15 +270,18 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                 sv = zl_floor_shift64(persp_apply(V + (int64_t)every * dV, r2) - v8, shift);
             }
         }
-        if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
+        /* blending's alpha; a fragment of alpha 0 is discarded (no colour, no depth) */
+        a = blend == ZL_BLEND_OFF ? 255u : frag_alpha(sty->alpha, tex, u8, v8);
+        if (a != 0 && (func == ZL_ALWAYS || depth_pass(func, d, zrow[i]))) {
             if (ss->zwrite)
                 zrow[i] = (uint16_t)d;
             if (ss->bpp != 0) {
                 unsigned r, gg, b;
                 if (tex != NULL) {
-                    uint16_t tx = tex->texels[(size_t)texel_index(v8, tex->height, tex->wrap_t) * tex->stride +
-                                              texel_index(u8, tex->width, tex->wrap_s)];
-                    unpack565(tx, &r, &gg, &b);
+                    unsigned ta;
+                    uint16_t tx = tex->texels[(size_t)texel_index_any(v8, tex->height, tex->wrap_t) * tex->stride +
+                                              texel_index_any(u8, tex->width, tex->wrap_s)];
+                    unpack_texel(tx, tex->format, &r, &gg, &b, &ta);
                     if (light != 255) {
                         r = (r * light + 127) / 255;
                         gg = (gg * light + 127) / 255;
@@ -206,13 +298,25 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                     r = (unsigned)cc[0];
                     gg = (unsigned)cc[1];
                     b = (unsigned)cc[2];
+                } else if (lg) {
+                    r = channel_of(lc[0]);
+                    gg = channel_of(lc[1]);
+                    b = channel_of(lc[2]);
                 } else {
                     r = t->rgb[0];
                     gg = t->rgb[1];
                     b = t->rgb[2];
                 }
-                pack_color((zl_format)ss->format, r, gg, b, pix);
-                put_pixel(crow + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+                if (blend != ZL_BLEND_OFF) {
+                    unsigned src[3];
+                    src[0] = r;
+                    src[1] = gg;
+                    src[2] = b;
+                    blend_pixel(crow + (size_t)i * ss->bpp, ss, blend, src, a);
+                } else {
+                    pack_color((zl_format)ss->format, r, gg, b, pix);
+                    put_pixel(crow + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+                }
             }
         }
         z += dz;
@@ -221,8 +325,10 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         V += dV;
         u8 += su;
         v8 += sv;
-        for (k = 0; k < 3; k++)
+        for (k = 0; k < 3; k++) {
             C[k] += dC[k];
+            lc[k] += ldc[k];
+        }
     }
 }
 
@@ -232,7 +338,7 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
     int k;
     if (tp == NULL || !zl_style_needs_planes(sty))
         return zl_tri_row(t, g, ss, color_row, depth_row);
-    row_span_ex(t, sty->persp_gouraud ? g : NULL, tp, sty, ss, color_row, depth_row);
+    row_span_ex(t, sty->persp_gouraud || sty->blend != ZL_BLEND_OFF ? g : NULL, tp, sty, ss, color_row, depth_row);
     edge_step(&t->left);
     edge_step(&t->right);
     t->z.row += t->z.dy;
