@@ -8,11 +8,16 @@
  *   const uint8_t  NAME_vertex_colors[3 * NAME_VERTEX_COUNT]; only when the OBJ
  *                  has a colour on every vertex (v x y z r g b) and
  *                  --no-colors is not given; NAME_HAS_VERTEX_COLORS says which
+ *   const zl_fixed NAME_texcoords[2 * NAME_VERTEX_COUNT];    only when faces use
+ *                  vt and --no-texcoords is not given: s, t per vertex,
+ *                  Q16.16 (s = u, t = 1 - v), for zl_style.texcoords; a
+ *                  vertex used with different vt is split (zl_obj_load_file_tex);
+ *                  NAME_HAS_TEXCOORDS says which
  *   const zl_mesh  NAME_mesh;                                 views the arrays
  *
  * All const, so on a microcontroller they stay in flash.
  *
- *   zline-obj2c [--normalize] [--no-colors] [--name NAME] IN.obj OUT.c OUT.h
+ *   zline-obj2c [--normalize] [--no-colors] [--no-texcoords] [--name NAME] IN.obj OUT.c OUT.h
  *
  * --normalize  centre the bounding box on the origin and scale it to a
  *              largest extent of 2.0 (the benchmark scene's convention)
@@ -29,7 +34,7 @@
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: zline-obj2c [--normalize] [--no-colors] [--name NAME] IN.obj OUT.c OUT.h\n");
+    fprintf(stderr, "usage: zline-obj2c [--normalize] [--no-colors] [--no-texcoords] [--name NAME] IN.obj OUT.c OUT.h\n");
     exit(2);
 }
 
@@ -80,7 +85,7 @@ int main(int argc, char **argv)
     zl_obj obj;
     char msg[512], name[128], upper[128], guard[160];
     const char *in, *out_c, *out_h, *given_name = NULL;
-    int colors_wanted = 1, has_colors, i, ok;
+    int colors_wanted = 1, has_colors, tex_wanted = 1, has_tex, i, ok;
     uint32_t k, n;
     FILE *fc, *fh;
 
@@ -90,6 +95,8 @@ int main(int argc, char **argv)
             opt.normalize = 1;
         else if (strcmp(argv[i], "--no-colors") == 0)
             colors_wanted = 0;
+        else if (strcmp(argv[i], "--no-texcoords") == 0)
+            tex_wanted = 0;
         else if (strcmp(argv[i], "--name") == 0 && i + 1 < argc)
             given_name = argv[++i];
         else
@@ -114,11 +121,13 @@ int main(int argc, char **argv)
     upper[k] = '\0';
     sprintf(guard, "%s_MESH_H", upper);
 
-    if (zl_obj_load_file(&obj, in, &opt, msg, sizeof msg) != ZL_OBJ_OK) {
+    if ((tex_wanted ? zl_obj_load_file_tex(&obj, in, &opt, msg, sizeof msg)
+                    : zl_obj_load_file(&obj, in, &opt, msg, sizeof msg)) != ZL_OBJ_OK) {
         fprintf(stderr, "zline-obj2c: %s\n", msg);
         return 1;
     }
     has_colors = colors_wanted && obj.vertex_colors != NULL;
+    has_tex = tex_wanted && obj.texcoords != NULL;
 
     fh = fopen(out_h, "w");
     fc = fopen(out_c, "w");
@@ -131,7 +140,8 @@ int main(int argc, char **argv)
     fprintf(fh, "#ifndef %s\n#define %s\n\n#include <stdint.h>\n\n#include \"zline/zline.h\"\n\n", guard, guard);
     fprintf(fh, "#define %s_VERTEX_COUNT %luu\n", upper, (unsigned long)obj.vertex_count);
     fprintf(fh, "#define %s_TRIANGLE_COUNT %luu\n", upper, (unsigned long)obj.triangle_count);
-    fprintf(fh, "#define %s_HAS_VERTEX_COLORS %d\n\n", upper, has_colors);
+    fprintf(fh, "#define %s_HAS_VERTEX_COLORS %d\n", upper, has_colors);
+    fprintf(fh, "#define %s_HAS_TEXCOORDS %d\n\n", upper, has_tex);
     fprintf(fh, "/* x, y, z per vertex, Q16.16%s */\n", opt.normalize ?
             " (bounding box centred on the origin, largest extent 2.0)" : "");
     fprintf(fh, "extern const zl_fixed %s_positions[3 * %s_VERTEX_COUNT];\n", name, upper);
@@ -140,6 +150,10 @@ int main(int argc, char **argv)
     if (has_colors) {
         fprintf(fh, "/* r, g, b per vertex, 0..255 */\n");
         fprintf(fh, "extern const uint8_t %s_vertex_colors[3 * %s_VERTEX_COUNT];\n", name, upper);
+    }
+    if (has_tex) {
+        fprintf(fh, "/* s, t per vertex, Q16.16 (1.0 = the texture's size), for zl_style.texcoords */\n");
+        fprintf(fh, "extern const zl_fixed %s_texcoords[2 * %s_VERTEX_COUNT];\n", name, upper);
     }
     fprintf(fh, "/* A mesh viewing the arrays (no face colours). */\n");
     fprintf(fh, "extern const zl_mesh %s_mesh;\n\n#endif\n", name);
@@ -167,6 +181,17 @@ int main(int argc, char **argv)
         for (k = 0; k < obj.vertex_count; k++)
             fprintf(fc, "    %u, %u, %u,\n", obj.vertex_colors[3 * k], obj.vertex_colors[3 * k + 1],
                     obj.vertex_colors[3 * k + 2]);
+        fputs("};\n", fc);
+    }
+    if (has_tex) {
+        fprintf(fc, "\nconst zl_fixed %s_texcoords[2 * %s_VERTEX_COUNT] = {\n", name, upper);
+        for (k = 0; k < obj.vertex_count; k++) {
+            fputs("    ", fc);
+            put_fixed(fc, obj.texcoords[2 * k]);
+            fputs(", ", fc);
+            put_fixed(fc, obj.texcoords[2 * k + 1]);
+            fputs(",\n", fc);
+        }
         fputs("};\n", fc);
     }
     fprintf(fc, "\nconst zl_mesh %s_mesh = {\n    .positions = %s_positions,\n    .indices = %s_indices,\n",
