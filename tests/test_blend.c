@@ -103,6 +103,9 @@ static void write_pixel(uint8_t *buf, zl_format fmt, int i, const unsigned c[3])
  * texture with the alpha as grey (r = g = b = alpha, opaque). */
 static uint16_t tex4444[TW * TH], texgrey[TW * TH];
 static zl_texture tex, texg;
+/* the same for an 8 x 4 texture: a power of two, the blended fast loop's */
+static uint16_t p4444[8 * 4], pgrey[8 * 4];
+static zl_texture ptex, ptexg;
 
 static void make_textures(void)
 {
@@ -120,6 +123,18 @@ static void make_textures(void)
     tex.format = ZL_TEXEL_RGBA4444;
     texg = tex;
     texg.texels = texgrey;
+    for (i = 0; i < 8 * 4; i++) {
+        unsigned a = (unsigned)(i * 7) % 16u, c = next_rand() & 0xFFFu;
+        p4444[i] = (uint16_t)((c << 4) | a);
+        pgrey[i] = (uint16_t)((a << 12) | (a << 8) | (a << 4) | 15u);
+    }
+    ptex = tex;
+    ptex.texels = p4444;
+    ptex.width = 8;
+    ptex.height = 4;
+    ptex.stride = 8;
+    ptexg = ptex;
+    ptexg.texels = pgrey;
 }
 
 static zl_fixed pos[9];
@@ -145,7 +160,7 @@ static void random_triangle(void)
  * mode, shading. */
 typedef struct {
     int textured; /* 0 none, 1 RGBA4444, 2 the same texels read as RGB565 */
-    unsigned blend, alpha, gouraud, persp, depth_write, mask;
+    unsigned blend, alpha, gouraud, persp, depth_write, mask, pow2;
 } blend_case;
 
 static void apply(zl_context *c, const blend_case *bc, const zl_texture *t, unsigned blend)
@@ -185,13 +200,13 @@ static int run_case(const blend_case *bc, zl_format fmt)
     (void)mvp;
     /* captures: unblended colour, and the texel alpha as grey */
     init_ctx(&cs, src888, srcdepth, ZL_FORMAT_RGB888);
-    apply(&cs, bc, &tex, ZL_BLEND_OFF);
+    apply(&cs, bc, bc->pow2 ? &ptex : &tex, ZL_BLEND_OFF);
     cs.state.depth_write = 1;
     cs.state.color_mask = ZL_MASK_RGB;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&cs, black, 65535));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&cs, &m, mp));
     init_ctx(&cs, alpha888, alphadepth, ZL_FORMAT_RGB888);
-    apply(&cs, bc, &texg, ZL_BLEND_OFF);
+    apply(&cs, bc, bc->pow2 ? &ptexg : &texg, ZL_BLEND_OFF);
     cs.state.depth_write = 1;
     cs.state.color_mask = ZL_MASK_RGB;
     cs.state.shading = ZL_SHADE_FLAT;
@@ -204,7 +219,7 @@ static int run_case(const blend_case *bc, zl_format fmt)
     for (i = 0; i < W * H; i++)
         depth[i] = 65535;
     init_ctx(&c, color, depth, fmt);
-    apply(&c, bc, &tex, bc->blend);
+    apply(&c, bc, bc->pow2 ? &ptex : &tex, bc->blend);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&c, &m, mp));
     for (i = 0; i < W * H; i++) {
         unsigned old[3], src[3], ref[3], a = bc->alpha, k;
@@ -288,7 +303,7 @@ static void test_blend_matches_reference_in_every_format(void)
 {
     int n, changed = 0, f;
     make_textures();
-    for (n = 0; n < 300; n++) {
+    for (n = 0; n < 400; n++) {
         blend_case bc;
         random_triangle();
         bc.textured = (int)(next_rand() % 3u);
@@ -298,6 +313,7 @@ static void test_blend_matches_reference_in_every_format(void)
         bc.persp = next_rand() % 2u;
         bc.depth_write = n % 4 != 0;
         bc.mask = n % 6 == 0 ? (1u + next_rand() % 7u) : ZL_MASK_RGB;
+        bc.pow2 = next_rand() % 2u;
         for (f = 0; f < 3; f++)
             changed += run_case(&bc, (zl_format)f);
     }

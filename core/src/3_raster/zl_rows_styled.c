@@ -184,6 +184,90 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
     }
 }
 
+/* texel_index for an affine Q12 coordinate of 32 bits (power-of-two size). */
+static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsigned wrap)
+{
+    int32_t i = zl_floor_shift32(c12, 12);
+    if (wrap == ZL_WRAP_CLAMP)
+        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
+    return (uint32_t)i & (uint32_t)(size - 1u);
+}
+
+/*
+ * Blended spans in their own loop (the common case of BLENDING): native
+ * RGB565, all channels, depth LESS or LEQUAL, a flat colour (src, already
+ * lit) or an unlit affine texture of power-of-two size; exactly the values
+ * of the general loop (blend_pixel), with the constant parts hoisted.
+ */
+static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwrite, const zl_texture *tex,
+                                           unsigned alpha, const unsigned *src, uint16_t *crow, uint16_t *zrow,
+                                           int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
+                                           int32_t dv)
+{
+    unsigned sa[3], k, na = 255u - alpha;
+    int32_t i;
+    for (k = 0; k < 3; k++) /* flat: src a, or for ADD its rounded share */
+        sa[k] = mode == ZL_BLEND_ADD ? div255(src[k] * alpha) : src[k] * alpha;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zrow[i])) {
+            unsigned c[3], a = alpha, old = crow[i], o[3];
+            const unsigned *add = sa;
+            unsigned mul[3];
+            if (tex != NULL) {
+                unsigned ta;
+                /* power-of-two sizes (the caller checked), wrap or clamp per axis */
+                uint16_t tx = tex->texels[(size_t)texel_wrap32(v, tex->height, tex->wrap_t) * tex->stride +
+                                          texel_wrap32(u, tex->width, tex->wrap_s)];
+                unpack_texel(tx, tex->format, &c[0], &c[1], &c[2], &ta);
+                if (tex->format == ZL_TEXEL_RGBA4444)
+                    a = div255(alpha * ta);
+                for (k = 0; k < 3; k++)
+                    mul[k] = mode == ZL_BLEND_ADD ? div255(c[k] * a) : c[k] * a;
+                add = mul;
+            }
+            if (a != 0) {
+                unsigned r5 = old >> 11, g6 = (old >> 5) & 63u, b5 = old & 31u, nk = tex != NULL ? 255u - a : na;
+                o[0] = (r5 << 3) | (r5 >> 2);
+                o[1] = (g6 << 2) | (g6 >> 4);
+                o[2] = (b5 << 3) | (b5 >> 2);
+                for (k = 0; k < 3; k++) {
+                    if (mode == ZL_BLEND_ADD) {
+                        unsigned t = o[k] + add[k];
+                        o[k] = t > 255u ? 255u : t;
+                    } else {
+                        o[k] = div255(add[k] + o[k] * nk);
+                    }
+                }
+                if (zwrite)
+                    zrow[i] = (uint16_t)d;
+                crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
+            }
+        }
+        z += dz;
+        u += du;
+        v += dv;
+    }
+}
+
+/* span_blend565 with the depth function and blend mode as constants. */
+static void span_blend565_any(unsigned func, unsigned mode, int zwrite, const zl_texture *tex, unsigned alpha,
+                              const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                              int32_t u, int32_t du, int32_t v, int32_t dv)
+{
+    if (func == ZL_LESS) {
+        if (mode == ZL_BLEND_ALPHA)
+            span_blend565(ZL_LESS, ZL_BLEND_ALPHA, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+        else
+            span_blend565(ZL_LESS, ZL_BLEND_ADD, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+    } else {
+        if (mode == ZL_BLEND_ALPHA)
+            span_blend565(ZL_LEQUAL, ZL_BLEND_ALPHA, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+        else
+            span_blend565(ZL_LEQUAL, ZL_BLEND_ADD, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+    }
+}
+
 static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texplanes *tp, const zl_style *sty,
                         const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
 {
@@ -249,6 +333,19 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         else
             span_tex565(ZL_LEQUAL, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
                         dQ);
+        return;
+    }
+    if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
+        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
+        (tex == NULL || (!persp && light == 255 && is_pow2(tex->width) && is_pow2(tex->height) &&
+                         affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
+        unsigned src[3];
+        src[0] = t->rgb[0];
+        src[1] = t->rgb[1];
+        src[2] = t->rgb[2];
+        if (sty->alpha != 0 || tex != NULL) /* constant alpha 0 discards every fragment */
+            span_blend565_any(func, blend, ss->zwrite, tex, sty->alpha, src, (uint16_t *)(void *)crow, zrow, n, z, dz,
+                              (int32_t)U, (int32_t)dU, (int32_t)V, (int32_t)dV);
         return;
     }
     for (i = 0; i < n; i++) {
