@@ -5,7 +5,7 @@
 # static analysers of tools/lint/run.sh.
 set -eu
 pkgs="cmake make gcc libc6-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
-qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck"
+qemu-system-arm netpbm libpng-dev valgrind clang libclang-rt-dev clang-tidy cppcheck"
 missing=""
 for p in $pkgs; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

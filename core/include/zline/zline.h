@@ -346,14 +346,16 @@ zl_status zl_state_check(const zl_state *s);
 #define ZL_MAX_POINT_SIZE 64
 
 /*
- * TEXTURES. A texture is RGB565 texels (native byte order) in caller memory,
- * const allowed (flash), width and height powers of two 1 .. 4096, row r at
- * texels + r * stride. Texture coordinates (style.texcoords) are 2 Q16.16
+ * TEXTURES. A texture is RGB565 or RGBA4444 texels (native byte order; see
+ * TEXEL FORMATS AND SIZES) in caller memory, const allowed (flash), width and
+ * height 1 .. 4096, row r at texels + r * stride (zline-img2c makes one from
+ * an image). Texture coordinates (style.texcoords) are 2 Q16.16
  * per vertex, (s, t), 1.0 = the texture's width or height; they are carried
  * through clipping with the vertex. A pixel takes the texel containing its
  * coordinate (nearest sampling: texel floor(s * width), floor(t * height)),
  * wrapped (ZL_WRAP_REPEAT: modulo the size) or clamped to the edge texels
- * (ZL_WRAP_CLAMP), times the lighting intensity when the state's light is on.
+ * (ZL_WRAP_CLAMP), per axis (wrap_s, wrap_t), times the lighting intensity
+ * when the state's light is on.
  *
  * Mapping: ZL_TEX_AFFINE interpolates (s, t) linearly in screen space, as
  * Gouraud colour (cheap, wrong under perspective). ZL_TEX_PERSPECTIVE
