@@ -160,7 +160,7 @@ static void random_triangle(void)
  * mode, shading. */
 typedef struct {
     int textured; /* 0 none, 1 RGBA4444, 2 the same texels read as RGB565 */
-    unsigned blend, alpha, gouraud, persp, depth_write, mask, pow2;
+    unsigned blend, alpha, gouraud, persp, depth_write, mask, pow2, filter;
 } blend_case;
 
 static void apply(zl_context *c, const blend_case *bc, const zl_texture *t, unsigned blend)
@@ -184,6 +184,7 @@ static void apply(zl_context *c, const blend_case *bc, const zl_texture *t, unsi
     }
     c->style.blend = (uint8_t)blend;
     c->style.alpha = (uint8_t)bc->alpha;
+    c->style.tex_filter = (uint8_t)bc->filter;
 }
 
 /* One case in one format: background, unblended captures, blended draw, and
@@ -314,6 +315,7 @@ static void test_blend_matches_reference_in_every_format(void)
         bc.depth_write = n % 4 != 0;
         bc.mask = n % 6 == 0 ? (1u + next_rand() % 7u) : ZL_MASK_RGB;
         bc.pow2 = next_rand() % 2u;
+        bc.filter = next_rand() % 2u;
         for (f = 0; f < 3; f++)
             changed += run_case(&bc, (zl_format)f);
     }
@@ -379,6 +381,83 @@ static void test_any_size_repeat_and_clamp(void)
                             TEST_ASSERT_EQUAL_UINT8(e[k], color[(y * W + x) * 3 + k]);
                     }
             }
+}
+
+/* Bilinear filtering against the rule of zline.h (TEXTURE FILTERING)
+ * computed here in double: a pixel-space quad 16 x 8 pixels whose texture
+ * coordinates run from -1/2 to 3/2 of the texture on each axis, so the
+ * coordinate at every pixel centre is an exact multiple of 1/256 texel;
+ * repeat and clamp, a power-of-two (8 x 4) and a 5 x 3 RGBA4444 texture.
+ * Colour unblended, and alpha through an ALPHA blend over black. */
+static double tex_channel(const zl_texture *t, int i, int j, int ch)
+{
+    unsigned v;
+    if (t->wrap_s == ZL_WRAP_CLAMP)
+        i = i < 0 ? 0 : (i >= t->width ? t->width - 1 : i);
+    else
+        i = ((i % t->width) + t->width) % t->width;
+    if (t->wrap_t == ZL_WRAP_CLAMP)
+        j = j < 0 ? 0 : (j >= t->height ? t->height - 1 : j);
+    else
+        j = ((j % t->height) + t->height) % t->height;
+    v = t->texels[j * t->stride + i];
+    return (double)(((v >> (12 - 4 * ch)) & 15u) * 17u);
+}
+
+static double floor_dd(double x)
+{
+    double f = (double)(long long)x;
+    return f > x ? f - 1 : f;
+}
+
+static void test_bilinear_matches_rule(void)
+{
+    static const zl_fixed quad[] = {0, 0, 0, ZL_FX_INT(16), 0, 0, ZL_FX_INT(16), ZL_FX_INT(8), 0, 0, ZL_FX_INT(8), 0};
+    static const zl_fixed quv[] = {-ZL_FX_HALF, -ZL_FX_HALF, ZL_FX_INT(3) / 2, -ZL_FX_HALF,
+                                   ZL_FX_INT(3) / 2, ZL_FX_INT(3) / 2, -ZL_FX_HALF, ZL_FX_INT(3) / 2};
+    static const uint16_t qidx[] = {0, 1, 2, 0, 2, 3};
+    zl_mesh m = {quad, qidx, NULL, NULL, 4, 2};
+    zl_context c;
+    zl_rgb black = {0, 0, 0};
+    int which, wrap, pass, x, y, k, mixed = 0;
+    make_textures();
+    for (which = 0; which < 2; which++)
+        for (wrap = 0; wrap < 4; wrap++)
+            for (pass = 0; pass < 2; pass++) {
+                zl_texture t = which ? ptex : tex;
+                t.wrap_s = (uint8_t)(wrap & 1);
+                t.wrap_t = (uint8_t)(wrap >> 1);
+                init_ctx(&c, color, depth, ZL_FORMAT_RGB888);
+                c.style.texture = &t;
+                c.style.texcoords = quv;
+                c.style.tex_filter = ZL_FILTER_BILINEAR;
+                c.style.blend = (uint8_t)(pass ? ZL_BLEND_ALPHA : ZL_BLEND_OFF);
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c, black, 65535));
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&c, &m, NULL));
+                for (y = 0; y < 8; y++)
+                    for (x = 0; x < 16; x++) {
+                        /* texel coordinate at the centre: -size/2 + (x + 1/2) * 2 size / 16 */
+                        double cu = -t.width / 2.0 + (x + 0.5) * t.width / 8.0;
+                        double cv = -t.height / 2.0 + (y + 0.5) * t.height / 4.0;
+                        double pu = cu - 0.5, pv = cv - 0.5, iu = floor_dd(pu), iv = floor_dd(pv);
+                        double fu = pu - iu, fv = pv - iv, val[4];
+                        for (k = 0; k < 4; k++) {
+                            double top = tex_channel(&t, (int)iu, (int)iv, k) * (1 - fu) +
+                                         tex_channel(&t, (int)iu + 1, (int)iv, k) * fu;
+                            double bottom = tex_channel(&t, (int)iu, (int)iv + 1, k) * (1 - fu) +
+                                            tex_channel(&t, (int)iu + 1, (int)iv + 1, k) * fu;
+                            val[k] = floor_dd(top * (1 - fv) + bottom * fv + 0.5);
+                        }
+                        mixed += fu != 0 && fv != 0;
+                        for (k = 0; k < 3; k++) {
+                            unsigned e = (unsigned)val[k];
+                            if (pass) /* over black: round(src a / 255), or untouched when a = 0 */
+                                e = ((unsigned)val[k] * (unsigned)val[3] + 127u) / 255u;
+                            TEST_ASSERT_EQUAL_UINT8(e, color[(y * W + x) * 3 + k]);
+                        }
+                    }
+            }
+    TEST_ASSERT_GREATER_THAN(100, mixed);
 }
 
 /* ------------------------------------------ scanline and band mode */
@@ -513,6 +592,11 @@ static void test_blend_state_checked(void)
     tex.format = 2;
     TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_style_check(&s));
     tex.format = ZL_TEXEL_RGBA4444;
+    s.tex_filter = 2;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_style_check(&s));
+    s.tex_filter = ZL_FILTER_BILINEAR;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_style_check(&s));
+    tex.format = ZL_TEXEL_RGBA4444;
     tex.width = 0;
     TEST_ASSERT_EQUAL_INT(ZL_ERR_SIZE, zl_style_check(&s));
     tex.width = 4097;
@@ -547,6 +631,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_blend_matches_reference_in_every_format);
     RUN_TEST(test_any_size_repeat_and_clamp);
+    RUN_TEST(test_bilinear_matches_rule);
     RUN_TEST(test_scanline_and_bands_identical_to_frame);
     RUN_TEST(test_blend_state_checked);
     return UNITY_END();

@@ -418,6 +418,18 @@ typedef enum { ZL_WRAP_REPEAT = 0, ZL_WRAP_CLAMP = 1 } zl_wrap;
 typedef enum { ZL_TEX_AFFINE = 0, ZL_TEX_PERSPECTIVE = 1 } zl_tex_mapping;
 typedef enum { ZL_TEXEL_RGB565 = 0, ZL_TEXEL_RGBA4444 = 1 } zl_texel_format;
 typedef enum { ZL_BLEND_OFF = 0, ZL_BLEND_ALPHA = 1, ZL_BLEND_ADD = 2 } zl_blend;
+/*
+ * TEXTURE FILTERING (style.tex_filter): ZL_FILTER_NEAREST (the default) takes
+ *   the texel containing the coordinate. ZL_FILTER_BILINEAR blends the four
+ *   texels around it: per axis, with c the texel coordinate in 1/256 texel
+ *   (as above), p = c - 128 (the texel centres), i = floor(p / 256) and
+ *   f = p - 256 i (0..255), the texels i and i + 1, each wrapped or clamped
+ *   by the axis' rule; per 8-bit channel (alpha too)
+ *     top = t(i, j) (256 - fs) + t(i + 1, j) fs, bottom likewise at j + 1,
+ *     value = (top (256 - ft) + bottom ft + 2^15) >> 16.
+ *   Integer only (products below 2^24); it takes the general span loop.
+ */
+typedef enum { ZL_FILTER_NEAREST = 0, ZL_FILTER_BILINEAR = 1 } zl_tex_filter;
 
 typedef struct {
     const uint16_t *texels; /* zl_texel_format, native byte order */
@@ -478,6 +490,7 @@ typedef struct {
     uint8_t line_aa;            /* 1: antialiased lines (see ANTIALIASED LINES) */
     uint8_t blend;              /* zl_blend of filled triangles (see BLENDING) */
     uint8_t alpha;              /* constant alpha 0..255 of blending (default 255) */
+    uint8_t tex_filter;         /* zl_tex_filter (see TEXTURE FILTERING) */
 } zl_style;
 
 /*

@@ -59,16 +59,37 @@ static void unpack_texel(uint16_t t, unsigned format, unsigned *r, unsigned *g, 
     }
 }
 
-/* Alpha of a blended fragment: the constant, times the texel's alpha for
- * RGBA4444 textures. */
-static unsigned frag_alpha(unsigned alpha, const zl_texture *tex, int64_t u8, int64_t v8)
+/* The texture at (u8, v8), in 1/256 texel, as 8-bit r, g, b, a (out[0..3]):
+ * the texel containing it, or with ZL_FILTER_BILINEAR the four texels
+ * around p = c - 1/2 weighted by the fractions of p in 1/256 (zline.h,
+ * TEXTURE FILTERING). Every product stays below 2^24: 32-bit sums. */
+static void tex_sample(const zl_texture *tex, unsigned filter, int64_t u8, int64_t v8, unsigned *out)
 {
-    uint16_t tx;
-    if (tex == NULL || tex->format != ZL_TEXEL_RGBA4444)
-        return alpha;
-    tx = tex->texels[(size_t)texel_index_any(v8, tex->height, tex->wrap_t) * tex->stride +
-                     texel_index_any(u8, tex->width, tex->wrap_s)];
-    return div255(alpha * ((unsigned)(tx & 15u) * 17u));
+    if (filter != ZL_FILTER_BILINEAR) {
+        uint16_t tx = tex->texels[(size_t)texel_index_any(v8, tex->height, tex->wrap_t) * tex->stride +
+                                  texel_index_any(u8, tex->width, tex->wrap_s)];
+        unpack_texel(tx, tex->format, &out[0], &out[1], &out[2], &out[3]);
+        return;
+    }
+    {
+        const int64_t pu = u8 - 128, pv = v8 - 128;
+        /* the fraction of a floor: conversion to unsigned is modulo 2^N, so
+         * the low byte of a negative p is its floor's fraction too */
+        const unsigned fx = (unsigned)(uint64_t)pu & 255u, fy = (unsigned)(uint64_t)pv & 255u;
+        const size_t x0 = texel_index_any(pu, tex->width, tex->wrap_s);
+        const size_t x1 = texel_index_any(pu + 256, tex->width, tex->wrap_s);
+        const uint16_t *r0 = tex->texels + (size_t)texel_index_any(pv, tex->height, tex->wrap_t) * tex->stride;
+        const uint16_t *r1 = tex->texels + (size_t)texel_index_any(pv + 256, tex->height, tex->wrap_t) * tex->stride;
+        unsigned c[4][4], k;
+        unpack_texel(r0[x0], tex->format, &c[0][0], &c[0][1], &c[0][2], &c[0][3]);
+        unpack_texel(r0[x1], tex->format, &c[1][0], &c[1][1], &c[1][2], &c[1][3]);
+        unpack_texel(r1[x0], tex->format, &c[2][0], &c[2][1], &c[2][2], &c[2][3]);
+        unpack_texel(r1[x1], tex->format, &c[3][0], &c[3][1], &c[3][2], &c[3][3]);
+        for (k = 0; k < 4; k++) {
+            unsigned top = c[0][k] * (256u - fx) + c[1][k] * fx, bottom = c[2][k] * (256u - fx) + c[3][k] * fx;
+            out[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+        }
+    }
 }
 
 /* Blend (r, g, b) with alpha a (1..255) into the pixel at p (see BLENDING
@@ -278,7 +299,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
     int lg = g != NULL && ss->gouraud && !sty->persp_gouraud; /* screen-linear Gouraud (blending) */
     unsigned blend = sty->blend;
     uint32_t lc[3] = {0, 0, 0}, ldc[3] = {0, 0, 0};
-    unsigned a;
+    unsigned a, tc[4] = {0, 0, 0, 0}, filter = sty->tex_filter;
+    int sampled;
     unsigned every = sty->tex_every > 1 ? sty->tex_every : 1u, shift = 0, func = ss->func, light = t->light;
     uint32_t z, dz;
     int64_t U = 0, V = 0, Q, dU = 0, dV = 0, dQ, C[3] = {0, 0, 0}, dC[3] = {0, 0, 0};
@@ -321,7 +343,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
     zrow = zrow ? zrow + x0 : NULL;
     if ((crow == NULL && ss->bpp != 0) || (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS)))
         return; /* as in row_span */
-    if (tex != NULL && blend == ZL_BLEND_OFF && tex->format == ZL_TEXEL_RGB565 && is_pow2(tex->width) &&
+    if (tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_NEAREST && tex->format == ZL_TEXEL_RGB565 &&
+        is_pow2(tex->width) &&
         is_pow2(tex->height) && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
         (persp || (affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
@@ -337,7 +360,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
     }
     if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
-        (tex == NULL || (!persp && light == 255 && is_pow2(tex->width) && is_pow2(tex->height) &&
+        (tex == NULL || (!persp && light == 255 && filter == ZL_FILTER_NEAREST && is_pow2(tex->width) && is_pow2(tex->height) &&
                          affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
         unsigned src[3];
         src[0] = t->rgb[0];
@@ -368,17 +391,27 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
             }
         }
         /* blending's alpha; a fragment of alpha 0 is discarded (no colour, no depth) */
-        a = blend == ZL_BLEND_OFF ? 255u : frag_alpha(sty->alpha, tex, u8, v8);
+        sampled = 0;
+        a = 255u;
+        if (blend != ZL_BLEND_OFF) {
+            a = sty->alpha;
+            if (tex != NULL && tex->format == ZL_TEXEL_RGBA4444) {
+                tex_sample(tex, filter, u8, v8, tc);
+                sampled = 1;
+                a = div255(a * tc[3]);
+            }
+        }
         if (a != 0 && (func == ZL_ALWAYS || depth_pass(func, d, zrow[i]))) {
             if (ss->zwrite)
                 zrow[i] = (uint16_t)d;
             if (ss->bpp != 0) {
                 unsigned r, gg, b;
                 if (tex != NULL) {
-                    unsigned ta;
-                    uint16_t tx = tex->texels[(size_t)texel_index_any(v8, tex->height, tex->wrap_t) * tex->stride +
-                                              texel_index_any(u8, tex->width, tex->wrap_s)];
-                    unpack_texel(tx, tex->format, &r, &gg, &b, &ta);
+                    if (!sampled)
+                        tex_sample(tex, filter, u8, v8, tc);
+                    r = tc[0];
+                    gg = tc[1];
+                    b = tc[2];
                     if (light != 255) {
                         r = (r * light + 127) / 255;
                         gg = (gg * light + 127) / 255;

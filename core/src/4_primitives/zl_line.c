@@ -36,6 +36,7 @@ void zl_style_default(zl_style *s)
     s->line_aa = 0;
     s->blend = ZL_BLEND_OFF;
     s->alpha = 255;
+    s->tex_filter = ZL_FILTER_NEAREST;
 }
 
 static int tex_size(uint16_t n)
@@ -55,7 +56,7 @@ zl_status zl_style_check(const zl_style *s)
         return ZL_ERR_RANGE;
     if (s->tex_mapping > ZL_TEX_PERSPECTIVE || s->persp_gouraud > 1 || s->line_aa > 1 || (s->toon_bands > 0 && s->toon_colors == NULL))
         return ZL_ERR_ARG;
-    if (s->blend > ZL_BLEND_ADD)
+    if (s->blend > ZL_BLEND_ADD || s->tex_filter > ZL_FILTER_BILINEAR)
         return ZL_ERR_ARG;
     if (s->tex_every > 1 && (s->tex_every > 64 || (s->tex_every & (s->tex_every - 1u)) != 0))
         return ZL_ERR_RANGE;

@@ -15,6 +15,7 @@
  *                 cleared frame: texel alpha times constant alpha 200
  *   blend         the flat quad alpha-blended at constant alpha 128
  *   blend_add     the flat quad blended additively at constant alpha 128
+ *   tex_bilinear  the textured quad (RGB565), affine, bilinear filtering
  * Each count is one whole zl_draw_* call (setup included) divided by the
  * pixels written; the clear is not counted. Prints "FEATURE tag name
  * instructions pixels per_pixel_x100".
@@ -108,6 +109,8 @@ static const uint16_t quad_idx[] = {0, 1, 2, 0, 2, 3};
 static int run_quad_blend(const char *name, int textured, unsigned mapping, unsigned every, unsigned blend,
                           unsigned alpha);
 
+static int bilinear; /* the next textured quads filter bilinearly */
+
 static int run_quad(const char *name, int textured, unsigned mapping, unsigned every)
 {
     return run_quad_blend(name, textured, mapping, every, ZL_BLEND_OFF, 255);
@@ -137,6 +140,7 @@ static int run_quad_blend(const char *name, int textured, unsigned mapping, unsi
         ctx.style.texcoords = quad_uv;
         ctx.style.tex_mapping = (uint8_t)mapping;
         ctx.style.tex_every = (uint8_t)every;
+        ctx.style.tex_filter = (uint8_t)(bilinear ? ZL_FILTER_BILINEAR : ZL_FILTER_NEAREST);
     }
     first = bench_stamp_count();
     mark();
@@ -178,5 +182,7 @@ int main(void)
     failed += run_quad_blend("tex_alpha", 1, ZL_TEX_AFFINE, 0, ZL_BLEND_ALPHA, 200);
     failed += run_quad_blend("blend", 0, 0, 0, ZL_BLEND_ALPHA, 128);
     failed += run_quad_blend("blend_add", 0, 0, 0, ZL_BLEND_ADD, 128);
+    bilinear = 1;
+    failed += run_quad("tex_bilinear", 1, ZL_TEX_AFFINE, 0);
     return failed;
 }
