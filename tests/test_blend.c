@@ -401,6 +401,10 @@ static double tex_channel(const zl_texture *t, int i, int j, int ch)
     else
         j = ((j % t->height) + t->height) % t->height;
     v = t->texels[j * t->stride + i];
+    if (t->format == ZL_TEXEL_RGB565) {
+        unsigned c = ch == 0 ? v >> 11 : (ch == 1 ? (v >> 5) & 63u : v & 31u);
+        return (double)(ch == 1 ? (c << 2) | (c >> 4) : (c << 3) | (c >> 2));
+    }
     return (double)(((v >> (12 - 4 * ch)) & 15u) * 17u);
 }
 
@@ -421,13 +425,18 @@ static void test_bilinear_matches_rule(void)
     zl_rgb black = {0, 0, 0};
     int which, wrap, pass, x, y, k, mixed = 0;
     make_textures();
-    for (which = 0; which < 2; which++)
+    /* which: 0 the 5x3 RGBA4444 texture, 1 the 8x4 one, 2 the 8x4 texels
+     * read as RGB565 into an RGB565 target (the bilinear fast loop) */
+    for (which = 0; which < 3; which++)
         for (wrap = 0; wrap < 4; wrap++)
-            for (pass = 0; pass < 2; pass++) {
+            for (pass = 0; pass < 2 - (which == 2); pass++) {
                 zl_texture t = which ? ptex : tex;
+                zl_format fmt = which == 2 ? ZL_FORMAT_RGB565 : ZL_FORMAT_RGB888;
                 t.wrap_s = (uint8_t)(wrap & 1);
                 t.wrap_t = (uint8_t)(wrap >> 1);
-                init_ctx(&c, color, depth, ZL_FORMAT_RGB888);
+                if (which == 2)
+                    t.format = ZL_TEXEL_RGB565;
+                init_ctx(&c, color, depth, fmt);
                 c.style.texture = &t;
                 c.style.texcoords = quv;
                 c.style.tex_filter = ZL_FILTER_BILINEAR;
@@ -449,6 +458,13 @@ static void test_bilinear_matches_rule(void)
                             val[k] = floor_dd(top * (1 - fv) + bottom * fv + 0.5);
                         }
                         mixed += fu != 0 && fv != 0;
+                        if (fmt == ZL_FORMAT_RGB565) {
+                            uint16_t got, e = (uint16_t)((((unsigned)val[0] >> 3) << 11) |
+                                                         (((unsigned)val[1] >> 2) << 5) | ((unsigned)val[2] >> 3));
+                            memcpy(&got, color + (y * W + x) * 2, 2);
+                            TEST_ASSERT_EQUAL_HEX16(e, got);
+                            continue;
+                        }
                         for (k = 0; k < 3; k++) {
                             unsigned e = (unsigned)val[k];
                             if (pass) /* over black: round(src a / 255), or untouched when a = 0 */

@@ -271,6 +271,64 @@ static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwr
     }
 }
 
+/* One bilinear tap index of a power-of-two axis, from its floor index. */
+static ZL_ALWAYS_INLINE uint32_t tap_pow2(int32_t i, uint16_t size, unsigned wrap)
+{
+    if (wrap == ZL_WRAP_CLAMP)
+        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
+    return (uint32_t)i & (uint32_t)(size - 1u);
+}
+
+/* A 565 texel's channel widened to 8 bits (shift, mask, replicate). */
+static ZL_ALWAYS_INLINE unsigned ch565(unsigned t, unsigned k)
+{
+    unsigned c;
+    if (k == 0) {
+        c = t >> 11;
+        return (c << 3) | (c >> 2);
+    }
+    if (k == 1) {
+        c = (t >> 5) & 63u;
+        return (c << 2) | (c >> 4);
+    }
+    c = t & 31u;
+    return (c << 3) | (c >> 2);
+}
+
+/*
+ * Bilinear spans in their own loop: an unlit affine RGB565 texture of
+ * power-of-two size, unblended, into native RGB565 with all channels and
+ * depth LESS or LEQUAL with writes; exactly tex_sample's values.
+ */
+static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *tex, uint16_t *crow, uint16_t *zrow,
+                                              int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
+                                              int32_t dv)
+{
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zrow[i])) {
+            int32_t pu = zl_floor_shift32(u, 4) - 128, pv = zl_floor_shift32(v, 4) - 128;
+            unsigned fx = (uint32_t)pu & 255u, fy = (uint32_t)pv & 255u, k, o[3];
+            int32_t iu = zl_floor_shift32(pu, 8), iv = zl_floor_shift32(pv, 8);
+            uint32_t x0 = tap_pow2(iu, tex->width, tex->wrap_s), x1 = tap_pow2(iu + 1, tex->width, tex->wrap_s);
+            const uint16_t *r0 = tex->texels + (size_t)tap_pow2(iv, tex->height, tex->wrap_t) * tex->stride;
+            const uint16_t *r1 = tex->texels + (size_t)tap_pow2(iv + 1, tex->height, tex->wrap_t) * tex->stride;
+            unsigned t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
+            for (k = 0; k < 3; k++) {
+                unsigned top = ch565(t00, k) * (256u - fx) + ch565(t10, k) * fx;
+                unsigned bottom = ch565(t01, k) * (256u - fx) + ch565(t11, k) * fx;
+                o[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+            }
+            zrow[i] = (uint16_t)d;
+            crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
+        }
+        z += dz;
+        u += du;
+        v += dv;
+    }
+}
+
 /* span_blend565 with the depth function and blend mode as constants. */
 static void span_blend565_any(unsigned func, unsigned mode, int zwrite, const zl_texture *tex, unsigned alpha,
                               const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
@@ -356,6 +414,19 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         else
             span_tex565(ZL_LEQUAL, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
                         dQ);
+        return;
+    }
+    if (tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_BILINEAR && !persp && light == 255 &&
+        tex->format == ZL_TEXEL_RGB565 && is_pow2(tex->width) && is_pow2(tex->height) &&
+        ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+        ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) && affine_fits(U, dU, n) &&
+        affine_fits(V, dV, n)) {
+        if (func == ZL_LESS)
+            span_bilinear565(ZL_LESS, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
+                             (int32_t)V, (int32_t)dV);
+        else
+            span_bilinear565(ZL_LEQUAL, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
+                             (int32_t)V, (int32_t)dV);
         return;
     }
     if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
