@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "zline/zl_visibility.h"
 #include "zline/zline.h"
 
 void setUp(void) {}
@@ -642,6 +643,85 @@ static void test_blend_state_checked(void)
     TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_add_mesh_styled(&fr, &m, NULL, &st, &s));
 }
 
+/* zl_painter_order: random triangles around a perspective camera, some
+ * behind the eye or beyond the far plane; the output must be a permutation
+ * of the triangles (each with its vertices in order) whose keys, computed
+ * here in double from the matrix (farthest vertex's z / w clamped to 0..1,
+ * 0 behind the eye), never increase, and equal keys keep the later
+ * triangle first. */
+static void test_painter_order(void)
+{
+    enum { NT = 60, NV = 3 * NT };
+    static zl_fixed p[NV * 3];
+    static uint16_t in[NT * 3], out[NT * 3], order[NT];
+    static uint32_t keys[NT];
+    static double key[NT];
+    static int used[NT];
+    zl_mat4 proj, view, mvp;
+    zl_vec3 eye = {0, 0, ZL_FX_INT(3)}, target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
+    zl_mesh m;
+    int i, k, round;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(60)), ZL_FX_ONE, ZL_FX_ONE / 2,
+                                                     ZL_FX_INT(20)));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_look_at(&view, eye, target, up));
+    zl_mat4_mul(&mvp, &proj, &view);
+    for (round = 0; round < 20; round++) {
+        for (i = 0; i < NV * 3; i++)
+            p[i] = (zl_fixed)(next_rand() % (60u * 65536u)) - 30 * 65536;
+        for (i = 0; i < NT * 3; i++)
+            in[i] = (uint16_t)(round % 2 ? (unsigned)i : next_rand() % NV); /* shared vertices: equal keys */
+        memset(&m, 0, sizeof m);
+        m.positions = p;
+        m.indices = in;
+        m.vertex_count = NV;
+        m.triangle_count = NT;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_painter_order(&m, &mvp, out, keys, order));
+        for (i = 0; i < NT; i++) {
+            double best = 0;
+            for (k = 0; k < 3; k++) {
+                const zl_fixed *v = p + in[i * 3 + k] * 3;
+                double z = 0, w = 0, d;
+                int c;
+                for (c = 0; c < 3; c++) {
+                    z += mvp.m[8 + c] / 65536.0 * (v[c] / 65536.0);
+                    w += mvp.m[12 + c] / 65536.0 * (v[c] / 65536.0);
+                }
+                z += mvp.m[11] / 65536.0;
+                w += mvp.m[15] / 65536.0;
+                d = w <= 0 || z <= 0 ? 0 : (z >= w ? 1 : z / w);
+                if (d > best)
+                    best = d;
+            }
+            key[i] = best;
+            used[i] = 0;
+        }
+        for (i = 0; i < NT; i++) {
+            int src = -1, j;
+            /* the input triangle this output triangle is (the first unused match) */
+            for (j = 0; j < NT && src < 0; j++)
+                if (!used[j] && in[j * 3] == out[i * 3] && in[j * 3 + 1] == out[i * 3 + 1] &&
+                    in[j * 3 + 2] == out[i * 3 + 2])
+                    src = j;
+            TEST_ASSERT_TRUE_MESSAGE(src >= 0, "not a permutation of the triangles");
+            used[src] = 1;
+            order[i] = (uint16_t)src;
+        }
+        for (i = 0; i + 1 < NT; i++) {
+            double a = key[order[i]], b = key[order[i + 1]];
+            if (!(a >= b - 2.0 / 65536)) {
+                char msg[120];
+                snprintf(msg, sizeof msg, "round %d position %d: key %.6f before %.6f", round, i, a, b);
+                TEST_FAIL_MESSAGE(msg);
+            }
+            if (a == b && round % 2) /* exactly equal (distinct vertices): the later one first */
+                TEST_ASSERT_TRUE(order[i] > order[i + 1]);
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_painter_order(&m, &mvp, in, keys, order));
+    in[0] = NV;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_painter_order(&m, &mvp, out, keys, order));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -650,5 +730,6 @@ int main(void)
     RUN_TEST(test_bilinear_matches_rule);
     RUN_TEST(test_scanline_and_bands_identical_to_frame);
     RUN_TEST(test_blend_state_checked);
+    RUN_TEST(test_painter_order);
     return UNITY_END();
 }

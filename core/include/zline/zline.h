@@ -410,8 +410,9 @@ zl_status zl_state_check(const zl_state *s);
  *   Transparent geometry: draw the opaque meshes first (depth test and
  *   writes on), then the transparent ones with depth_write = 0 and their
  *   triangles in back-to-front order by the painter's key of
- *   zl_visibility.h (the farthest vertex's window depth, far first), so each
- *   blends over what is behind it and none hides another (ALPHA is order
+ *   zl_visibility.h (the farthest vertex's window depth, far first;
+ *   zl_painter_order writes a mesh's indices in that order), so each blends
+ *   over what is behind it and none hides another (ALPHA is order
  *   dependent; ADD is not).
  */
 typedef enum { ZL_WRAP_REPEAT = 0, ZL_WRAP_CLAMP = 1 } zl_wrap;
