@@ -33,6 +33,9 @@ if(TARGET zline_host)
           COMPONENT host)
 endif()
 
+if(NOT ZLINE_HOST_HAS_PNG)
+  set(ZLINE_HOST_HAS_PNG FALSE)
+endif()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/zlineConfig.cmake.in
   ${PROJECT_BINARY_DIR}/zlineConfig.cmake
   INSTALL_DESTINATION ${ZLINE_INSTALL_CMAKEDIR})
@@ -53,8 +56,11 @@ install(FILES ${PROJECT_BINARY_DIR}/zline.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}
         COMPONENT core)
 if(TARGET zline_host)
   set(ZLINE_PC_HOST_LIBS "")
+  if(ZLINE_HOST_HAS_PNG)
+    set(ZLINE_PC_HOST_LIBS "-lpng")
+  endif()
   if(ZLINE_HAVE_LIBM)
-    set(ZLINE_PC_HOST_LIBS "-lm")
+    string(APPEND ZLINE_PC_HOST_LIBS " -lm")
   endif()
   configure_file(${CMAKE_CURRENT_LIST_DIR}/zline-host.pc.in ${PROJECT_BINARY_DIR}/zline-host.pc @ONLY)
   install(FILES ${PROJECT_BINARY_DIR}/zline-host.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig

@@ -8,7 +8,7 @@
 # build and run the RISC-V port.
 set -eu
 pkgs="cmake make gcc libc6-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
-qemu-system-arm netpbm valgrind clang libclang-rt-dev clang-tidy cppcheck
+qemu-system-arm netpbm libpng-dev valgrind clang libclang-rt-dev clang-tidy cppcheck
 python3 imagemagick
 gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc"
 # Consumer tests (tests/consumer): pkg-config, and g++ for the C++ header build.

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "zl_image.h"
 #include "zl_obj.h"
 #include "zl_pnm.h"
 #include "zline/zline.h"
@@ -49,10 +50,15 @@ static const char features_usage_text[] =
     "  --outline            silhouette and crease (> 60 degrees) edges in black\n"
     "                       over the model, with a small depth offset\n"
     "  --aa-lines           antialiased lines for --wireframe and --outline\n"
-    "  --texture file.ppm   texture the model with a P6 image (width and height\n"
-    "                       powers of two up to 4096) by its vt coordinates,\n"
-    "                       repeated, perspective-correct; lit with the light\n"
-    "  --affine             with --texture: affine (screen-linear) mapping\n";
+    "  --texture FILE       texture the model with a PPM, PGM or PNG image (any\n"
+    "                       size up to 4096) by its vt coordinates, repeated,\n"
+    "                       perspective-correct; lit with the light. Converted as\n"
+    "                       zline-img2c converts it: RGB565, or RGBA4444 when the\n"
+    "                       image has alpha\n"
+    "  --affine             with --texture: affine (screen-linear) mapping\n"
+    "  --blend MODE[,A]     blend the model over the background: alpha or add,\n"
+    "                       with constant alpha A (0..255, default 255) times the\n"
+    "                       texture's alpha\n";
 
 /* Help of smooth lighting (issue #15), printed after usage_text too. */
 static const char smooth_usage_text[] =
@@ -173,6 +179,7 @@ typedef struct {
     uint32_t edge_count;
     const char *texture_path; /* --texture */
     int affine;               /* --affine */
+    int blend, alpha;         /* --blend MODE[,A]: zl_blend, constant alpha */
     zl_texture texture;
     const zl_fixed *texcoords;
     /* issue #15: smooth lighting */
@@ -660,6 +667,22 @@ static int parse_options(int argc, char **argv, options *o)
         } else if (FLAG("--affine")) {
             NO_VALUE;
             o->affine = 1;
+        } else if (FLAG("--blend")) {
+            unsigned long alpha = 255;
+            const char *comma;
+            size_t len;
+            NEEDS_VALUE;
+            comma = strchr(val, ',');
+            len = comma != NULL ? (size_t)(comma - val) : strlen(val);
+            if (comma != NULL && !parse_uint(comma + 1, 255, &alpha))
+                return usage_error("--blend: expected an alpha 0..255 after the comma, got '%s'", comma + 1);
+            if (len == 5 && strncmp(val, "alpha", 5) == 0)
+                o->blend = ZL_BLEND_ALPHA;
+            else if (len == 3 && strncmp(val, "add", 3) == 0)
+                o->blend = ZL_BLEND_ADD;
+            else
+                return usage_error("--blend: expected alpha or add, got '%s'", val);
+            o->alpha = (int)alpha;
         } else if (FLAG("--toon")) {
             unsigned long n;
             NEEDS_VALUE;
@@ -934,11 +957,13 @@ static void style_of(const options *o, zl_style *sty)
         sty->texcoords = o->texcoords;
         sty->tex_mapping = (uint8_t)(o->affine ? ZL_TEX_AFFINE : ZL_TEX_PERSPECTIVE);
     }
+    sty->blend = (uint8_t)o->blend;
+    sty->alpha = (uint8_t)(o->blend ? o->alpha : 255);
 }
 
 static int styled(const options *o)
 {
-    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines || o->texture_path != NULL;
+    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines || o->texture_path != NULL || o->blend;
 }
 
 /* Outline: silhouettes and creases over 60 degrees, black, drawn with LEQUAL
@@ -1027,7 +1052,7 @@ static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *
     if (styled(o)) {
         /* line and point pieces: 3 a triangle; outline edges: 1 each */
         cfg->styled = 1;
-        cfg->textured = o->texture_path != NULL;
+        cfg->textured = o->texture_path != NULL || o->blend; /* blending uses the styled rows */
         cfg->max_meshes = 2;
         cfg->max_triangles = triangles + o->edge_count;
         cfg->max_active = active * 3u + o->edge_count;
@@ -1225,47 +1250,39 @@ done:
 
 /* ------------------------------------------------------------------- main */
 
-/* --texture: the P6 image as RGB565 texels (*texels, to free). */
+/* --texture: the image as texels (*texels, to free), converted by
+ * zl_image.h exactly as zline-img2c converts it for firmware: RGB565, or
+ * RGBA4444 when the image has alpha. */
 static int load_texture(options *o, const zl_obj *obj, uint16_t **texels)
 {
-    zl_pnm_image img;
-    char msg[512];
-    uint32_t i;
+    zl_image img;
+    char msg[1024];
+    zl_texel_format fmt;
     if (obj->texcoords == NULL) {
         error("--texture: %s has no texture coordinates (vt) on its faces", o->model);
         return 0;
     }
-    if (zl_pnm_read(&img, o->texture_path, msg, sizeof msg) != ZL_PNM_OK) {
-        error("%s", msg);
+    if (zl_image_load(&img, o->texture_path, NULL, msg, sizeof msg) != 0) {
+        error("--texture: %s", msg);
         return 0;
     }
-    if (img.channels != 3 || img.width < 1 || img.width > 4096 || img.height < 1 || img.height > 4096 ||
-        (img.width & (img.width - 1)) != 0 || (img.height & (img.height - 1)) != 0) {
-        error("--texture: %s must be a P6 image with power-of-two sides up to 4096 (it is %ux%u)",
-              o->texture_path, (unsigned)img.width, (unsigned)img.height);
-        zl_pnm_image_free(&img);
-        return 0;
-    }
+    fmt = img.has_alpha ? ZL_TEXEL_RGBA4444 : ZL_TEXEL_RGB565;
     *texels = (uint16_t *)malloc((size_t)img.width * img.height * sizeof(uint16_t));
     if (*texels == NULL) {
         error("out of memory");
-        zl_pnm_image_free(&img);
+        zl_image_free(&img);
         return 0;
     }
-    for (i = 0; i < img.width * img.height; i++) {
-        unsigned c[3], k;
-        for (k = 0; k < 3; k++)
-            c[k] = (unsigned)((img.samples[i * 3 + k] * 255u + img.maxval / 2) / img.maxval);
-        (*texels)[i] = (uint16_t)(((c[0] >> 3) << 11) | ((c[1] >> 2) << 5) | (c[2] >> 3));
-    }
+    zl_image_texels(&img, fmt, *texels);
     o->texture.texels = *texels;
     o->texture.width = (uint16_t)img.width;
     o->texture.height = (uint16_t)img.height;
     o->texture.stride = (uint16_t)img.width;
     o->texture.wrap_s = ZL_WRAP_REPEAT;
     o->texture.wrap_t = ZL_WRAP_REPEAT;
+    o->texture.format = (uint8_t)fmt;
     o->texcoords = obj->texcoords;
-    zl_pnm_image_free(&img);
+    zl_image_free(&img);
     return 1;
 }
 
@@ -1438,7 +1455,7 @@ int main(int argc, char **argv)
         goto done;
     }
     if (o.visibility != 0 && styled(&o)) {
-        error("--wireframe, --points, --toon, --outline, --aa-lines and --texture need the z-buffer (no "
+        error("--wireframe, --points, --toon, --outline, --aa-lines, --texture and --blend need the z-buffer (no "
               "--visibility)");
         goto done;
     }

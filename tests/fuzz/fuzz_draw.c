@@ -161,6 +161,12 @@ static void read_style(fz_in *in, fz_style *fs, unsigned vertex_count)
         }
         fs->style.toon_colors = fs->toon;
     }
+    if (f & 32u) { /* issue 15: blending, constant alpha, filtering, texel format */
+        fs->style.blend = fz_enum(in, 3);
+        fs->style.alpha = (uint8_t)fz_u8(in);
+        fs->style.tex_filter = fz_enum(in, 2);
+        fs->tex.format = fz_enum(in, 2);
+    }
 }
 
 static void free_style(fz_style *fs)

@@ -11,11 +11,16 @@
  *   const int16_t  NAME_normals[3 * NAME_VERTEX_COUNT];       only with --normals:
  *                  unit vectors, Q14 (16384 = 1.0), for zl_light_vertices;
  *                  NAME_HAS_NORMALS says whether they are there
+ *   const zl_fixed NAME_texcoords[2 * NAME_VERTEX_COUNT];    only when faces use
+ *                  vt and --no-texcoords is not given: s, t per vertex,
+ *                  Q16.16 (s = u, t = 1 - v), for zl_style.texcoords; a
+ *                  vertex used with different vt is split (zl_obj_load_file_tex);
+ *                  NAME_HAS_TEXCOORDS says which
  *   const zl_mesh  NAME_mesh;                                 views the arrays
  *
  * All const, so on a microcontroller they stay in flash.
  *
- *   zline-obj2c [--normalize] [--no-colors] [--normals MODE] [--name NAME] IN.obj OUT.c OUT.h
+ *   zline-obj2c [--normalize] [--no-colors] [--no-texcoords] [--normals MODE] [--name NAME] IN.obj OUT.c OUT.h
  *
  * --normalize  centre the bounding box on the origin and scale it to a
  *              largest extent of 2.0 (the benchmark scene's convention)
@@ -37,8 +42,8 @@
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: zline-obj2c [--normalize] [--no-colors] [--normals file|area|angle|auto] [--name NAME] "
-                    "IN.obj OUT.c OUT.h\n");
+    fprintf(stderr, "usage: zline-obj2c [--normalize] [--no-colors] [--no-texcoords] [--normals file|area|angle|auto] "
+                    "[--name NAME] IN.obj OUT.c OUT.h\n");
     exit(2);
 }
 
@@ -89,7 +94,7 @@ int main(int argc, char **argv)
     zl_obj obj;
     char msg[512], name[128], upper[128], guard[160];
     const char *in, *out_c, *out_h, *given_name = NULL;
-    int colors_wanted = 1, has_colors, i, ok;
+    int colors_wanted = 1, has_colors, tex_wanted = 1, has_tex, i, ok;
     const char *normals_mode = NULL, *normals_from = NULL;
     uint32_t k, n;
     FILE *fc, *fh;
@@ -102,6 +107,8 @@ int main(int argc, char **argv)
             colors_wanted = 0;
         else if (strcmp(argv[i], "--normals") == 0 && i + 1 < argc && normals_mode == NULL)
             normals_mode = argv[++i];
+        else if (strcmp(argv[i], "--no-texcoords") == 0)
+            tex_wanted = 0;
         else if (strcmp(argv[i], "--name") == 0 && i + 1 < argc)
             given_name = argv[++i];
         else
@@ -129,7 +136,8 @@ int main(int argc, char **argv)
     upper[k] = '\0';
     sprintf(guard, "%s_MESH_H", upper);
 
-    if (zl_obj_load_file(&obj, in, &opt, msg, sizeof msg) != ZL_OBJ_OK) {
+    if ((tex_wanted ? zl_obj_load_file_tex(&obj, in, &opt, msg, sizeof msg)
+                    : zl_obj_load_file(&obj, in, &opt, msg, sizeof msg)) != ZL_OBJ_OK) {
         fprintf(stderr, "zline-obj2c: %s\n", msg);
         return 1;
     }
@@ -153,6 +161,7 @@ int main(int argc, char **argv)
             normals_from = angle ? "computed, angle-weighted" : "computed, area-weighted";
         }
     }
+    has_tex = tex_wanted && obj.texcoords != NULL;
 
     fh = fopen(out_h, "w");
     fc = fopen(out_c, "w");
@@ -168,7 +177,7 @@ int main(int argc, char **argv)
     fprintf(fh, "#define %s_HAS_VERTEX_COLORS %d\n", upper, has_colors);
     if (normals_from != NULL)
         fprintf(fh, "#define %s_HAS_NORMALS 1\n", upper);
-    fputs("\n", fh);
+    fprintf(fh, "#define %s_HAS_TEXCOORDS %d\n\n", upper, has_tex);
     fprintf(fh, "/* x, y, z per vertex, Q16.16%s */\n", opt.normalize ?
             " (bounding box centred on the origin, largest extent 2.0)" : "");
     fprintf(fh, "extern const zl_fixed %s_positions[3 * %s_VERTEX_COUNT];\n", name, upper);
@@ -181,6 +190,10 @@ int main(int argc, char **argv)
     if (normals_from != NULL) {
         fprintf(fh, "/* normal x, y, z per vertex, Q14 unit vectors (16384 = 1.0), %s */\n", normals_from);
         fprintf(fh, "extern const int16_t %s_normals[3 * %s_VERTEX_COUNT];\n", name, upper);
+    }
+    if (has_tex) {
+        fprintf(fh, "/* s, t per vertex, Q16.16 (1.0 = the texture's size), for zl_style.texcoords */\n");
+        fprintf(fh, "extern const zl_fixed %s_texcoords[2 * %s_VERTEX_COUNT];\n", name, upper);
     }
     fprintf(fh, "/* A mesh viewing the arrays (no face colours). */\n");
     fprintf(fh, "extern const zl_mesh %s_mesh;\n\n#endif\n", name);
@@ -215,6 +228,17 @@ int main(int argc, char **argv)
         fprintf(fc, "const int16_t %s_normals[3 * %s_VERTEX_COUNT] = {\n", name, upper);
         for (k = 0; k < obj.vertex_count; k++)
             fprintf(fc, "    %d, %d, %d,\n", obj.normals[3 * k], obj.normals[3 * k + 1], obj.normals[3 * k + 2]);
+        fputs("};\n", fc);
+    }
+    if (has_tex) {
+        fprintf(fc, "\nconst zl_fixed %s_texcoords[2 * %s_VERTEX_COUNT] = {\n", name, upper);
+        for (k = 0; k < obj.vertex_count; k++) {
+            fputs("    ", fc);
+            put_fixed(fc, obj.texcoords[2 * k]);
+            fputs(", ", fc);
+            put_fixed(fc, obj.texcoords[2 * k + 1]);
+            fputs(",\n", fc);
+        }
         fputs("};\n", fc);
     }
     fprintf(fc, "\nconst zl_mesh %s_mesh = {\n    .positions = %s_positions,\n    .indices = %s_indices,\n",

@@ -178,6 +178,23 @@ typedef struct {
  */
 zl_status zl_painter_draw(zl_vis *v, const zl_vis_target *target, zl_rgb clear);
 
+/*
+ * The painter's order for transparent geometry (zline.h, BLENDING): the
+ * triangles of mesh, transformed by mvp (NULL: pixel space), written to
+ * out_indices (3 per triangle, each triangle's vertices in their order)
+ * back to front by the key above: the farthest vertex's window depth, a
+ * vertex's z / w clamped to the depth range (0 for one at or behind the
+ * eye, as near clipping leaves it), far first; equal keys put the later
+ * triangle first, so equal-depth triangles blend in the z-buffer's order.
+ * keys and order are scratch of triangle_count entries each; out_indices
+ * must not be mesh->indices. Draw the mesh with its indices replaced by
+ * out_indices (and depth writes off). ZL_ERR_ARG for NULL arguments,
+ * ZL_ERR_RANGE for an index out of range or a vertex the transform cannot
+ * take (zl_transform_point).
+ */
+zl_status zl_painter_order(const zl_mesh *mesh, const zl_mat4 *mvp, uint16_t *out_indices, uint32_t *keys,
+                           uint16_t *order);
+
 /* ------------------------------------------------------------------ BSP */
 
 #define ZL_BSP_LEAF 0xFFFFu /* child index of an empty subtree */

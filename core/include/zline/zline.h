@@ -422,14 +422,16 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
 #define ZL_MAX_POINT_SIZE 64
 
 /*
- * TEXTURES. A texture is RGB565 texels (native byte order) in caller memory,
- * const allowed (flash), width and height powers of two 1 .. 4096, row r at
- * texels + r * stride. Texture coordinates (style.texcoords) are 2 Q16.16
+ * TEXTURES. A texture is RGB565 or RGBA4444 texels (native byte order; see
+ * TEXEL FORMATS AND SIZES) in caller memory, const allowed (flash), width and
+ * height 1 .. 4096, row r at texels + r * stride (zline-img2c makes one from
+ * an image). Texture coordinates (style.texcoords) are 2 Q16.16
  * per vertex, (s, t), 1.0 = the texture's width or height; they are carried
  * through clipping with the vertex. A pixel takes the texel containing its
  * coordinate (nearest sampling: texel floor(s * width), floor(t * height)),
  * wrapped (ZL_WRAP_REPEAT: modulo the size) or clamped to the edge texels
- * (ZL_WRAP_CLAMP), times the lighting intensity when the state's light is on.
+ * (ZL_WRAP_CLAMP), per axis (wrap_s, wrap_t), times the lighting intensity
+ * when the state's light is on.
  *
  * Mapping: ZL_TEX_AFFINE interpolates (s, t) linearly in screen space, as
  * Gouraud colour (cheap, wrong under perspective). ZL_TEX_PERSPECTIVE
@@ -454,14 +456,64 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
  * intensity 0..255 of the lighting rule (zl_state; 255 with the light off).
  * Its face colour is not used; Gouraud shading keeps its vertex colours.
  */
+/*
+ * TEXEL FORMATS AND SIZES (texture.format): ZL_TEXEL_RGB565 (the default,
+ * 0 after memset) or ZL_TEXEL_RGBA4444: one uint16 per texel in native
+ * byte order, red in bits 15..12, green 11..8, blue 7..4, alpha 3..0
+ * (OpenGL's GL_UNSIGNED_SHORT_4_4_4_4). A 4-bit channel v widens to 8 bits
+ * as v * 17 (0 -> 0, 15 -> 255), an RGB565 one by bit replication. RGBA4444
+ * rather than RGB565 plus a 1-bit key: the same 2 bytes per texel, and 16
+ * levels of alpha give soft edges, glass and fades, which a key cannot; a
+ * colour key is simply alpha 0 or 15. Width and height may be any size
+ * 1 .. 4096: repeat takes the index modulo the size (a mask for powers of
+ * two, which alone take the fast RGB565 span loop; other sizes divide per
+ * texel). Without blending the alpha of RGBA4444 texels is ignored.
+ *
+ * BLENDING (style.blend, per draw, filled triangles only): after the depth
+ *   test, with a = style.alpha (0..255) for RGB565 texels or no texture, and
+ *   a = round(style.alpha * texel_alpha / 255) for RGBA4444 texels,
+ *     ZL_BLEND_OFF    the fragment's colour is written (the default)
+ *     ZL_BLEND_ALPHA  new = round((src a + old (255 - a)) / 255)
+ *     ZL_BLEND_ADD    new = min(255, old + round(src a / 255))
+ *   per 8-bit channel; old is the pixel in the colour buffer (RGB565 widened
+ *   by bit replication), new is packed as any colour is (RGB565 keeps the
+ *   top bits), and the colour mask applies. A fragment with a = 0 is
+ *   discarded (neither colour nor depth written), so cut-out texels leave
+ *   holes even with depth writes on. Depth is written as the state says.
+ *   Lines and points are not blended. Frame and scanline/band modes give the
+ *   same bytes (triangles blend in submission order in both); in scanline
+ *   mode blending needs cfg.styled and cfg.textured (it uses the styled rows).
+ *   Transparent geometry: draw the opaque meshes first (depth test and
+ *   writes on), then the transparent ones with depth_write = 0 and their
+ *   triangles in back-to-front order by the painter's key of
+ *   zl_visibility.h (the farthest vertex's window depth, far first;
+ *   zl_painter_order writes a mesh's indices in that order), so each blends
+ *   over what is behind it and none hides another (ALPHA is order
+ *   dependent; ADD is not).
+ */
 typedef enum { ZL_WRAP_REPEAT = 0, ZL_WRAP_CLAMP = 1 } zl_wrap;
 typedef enum { ZL_TEX_AFFINE = 0, ZL_TEX_PERSPECTIVE = 1 } zl_tex_mapping;
+typedef enum { ZL_TEXEL_RGB565 = 0, ZL_TEXEL_RGBA4444 = 1 } zl_texel_format;
+typedef enum { ZL_BLEND_OFF = 0, ZL_BLEND_ALPHA = 1, ZL_BLEND_ADD = 2 } zl_blend;
+/*
+ * TEXTURE FILTERING (style.tex_filter): ZL_FILTER_NEAREST (the default) takes
+ *   the texel containing the coordinate. ZL_FILTER_BILINEAR blends the four
+ *   texels around it: per axis, with c the texel coordinate in 1/256 texel
+ *   (as above), p = c - 128 (the texel centres), i = floor(p / 256) and
+ *   f = p - 256 i (0..255), the texels i and i + 1, each wrapped or clamped
+ *   by the axis' rule; per 8-bit channel (alpha too)
+ *     top = t(i, j) (256 - fs) + t(i + 1, j) fs, bottom likewise at j + 1,
+ *     value = (top (256 - ft) + bottom ft + 2^15) >> 16.
+ *   Integer only (products below 2^24); it takes the general span loop.
+ */
+typedef enum { ZL_FILTER_NEAREST = 0, ZL_FILTER_BILINEAR = 1 } zl_tex_filter;
 
 typedef struct {
-    const uint16_t *texels; /* RGB565, native byte order */
-    uint16_t width, height; /* powers of two, 1 .. 4096 */
+    const uint16_t *texels; /* zl_texel_format, native byte order */
+    uint16_t width, height; /* 1 .. 4096 (powers of two are faster) */
     uint16_t stride;        /* texels from one row to the next, >= width */
     uint8_t wrap_s, wrap_t; /* zl_wrap */
+    uint8_t format;         /* zl_texel_format (0: RGB565) */
 } zl_texture;
 
 typedef enum {
@@ -513,6 +565,9 @@ typedef struct {
     uint8_t toon_bands;         /* toon shading: 0 off, else 1 .. 255 bands (see TOON) */
     const zl_rgb *toon_colors;  /* toon_bands colours, darkest band first */
     uint8_t line_aa;            /* 1: antialiased lines (see ANTIALIASED LINES) */
+    uint8_t blend;              /* zl_blend of filled triangles (see BLENDING) */
+    uint8_t alpha;              /* constant alpha 0..255 of blending (default 255) */
+    uint8_t tex_filter;         /* zl_tex_filter (see TEXTURE FILTERING) */
 } zl_style;
 
 /*
@@ -552,7 +607,7 @@ typedef struct {
 } zl_outline;
 
 /* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset, no
- * texture, screen-linear Gouraud. */
+ * texture, screen-linear Gouraud, no blending (alpha 255). */
 void zl_style_default(zl_style *s);
 /* ZL_ERR_ARG for an unknown enum value, ZL_ERR_RANGE for a number outside its range. */
 zl_status zl_style_check(const zl_style *s);

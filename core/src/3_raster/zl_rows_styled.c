@@ -1,7 +1,7 @@
 /*
  * Stage 3, raster: rows of styled triangles (zl_tri_row_ex): textures,
- * affine or perspective-correct, perspective-correct Gouraud, and the
- * texel fetch with its wrap rule.
+ * affine or perspective-correct, perspective-correct Gouraud, the texel
+ * fetch with its wrap rule and texel formats, and blending.
  */
 #include <string.h>
 
@@ -9,13 +9,119 @@
 
 /* ------------------------------------------------- textures, perspective */
 
-/* One texel coordinate (1/256 texel) to a wrapped or clamped texel index. */
+/* One texel coordinate (1/256 texel) to a wrapped or clamped texel index,
+ * for a power-of-two size (the fast loop's textures). */
 static inline uint32_t texel_index(int64_t c8, uint16_t size, unsigned wrap)
 {
     int64_t i = zl_floor_shift64(c8, 8);
     if (wrap == ZL_WRAP_CLAMP)
         return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
     return (uint32_t)i & (uint32_t)(size - 1u); /* two's complement: modulo a power of two */
+}
+
+/* The same for any size 1 .. 4096: repeat is the non-negative remainder
+ * (C's % truncates towards zero, so a negative one moves up by size). */
+static inline uint32_t texel_index_any(int64_t c8, uint16_t size, unsigned wrap)
+{
+    int64_t i;
+    if ((size & (size - 1u)) == 0 || wrap == ZL_WRAP_CLAMP)
+        return texel_index(c8, size, wrap);
+    i = zl_floor_shift64(c8, 8) % (int64_t)size;
+    return (uint32_t)(i < 0 ? i + size : i);
+}
+
+static int is_pow2(uint16_t n)
+{
+    return (n & (n - 1u)) == 0;
+}
+
+/* round(x / 255) for 0 <= x <= 255 * 255, without a division. */
+static inline unsigned div255(unsigned x)
+{
+    x += 128u;
+    return (x + (x >> 8)) >> 8;
+}
+
+/* A texel as 8-bit r, g, b and alpha (255 for RGB565). */
+static void unpack_texel(uint16_t t, unsigned format, unsigned *r, unsigned *g, unsigned *b, unsigned *a)
+{
+    if (format == ZL_TEXEL_RGBA4444) {
+        *r = (unsigned)(t >> 12) * 17u;
+        *g = (unsigned)((t >> 8) & 15u) * 17u;
+        *b = (unsigned)((t >> 4) & 15u) * 17u;
+        *a = (unsigned)(t & 15u) * 17u;
+    } else {
+        unsigned r5 = t >> 11, g6 = (t >> 5) & 63u, b5 = t & 31u;
+        *r = (r5 << 3) | (r5 >> 2);
+        *g = (g6 << 2) | (g6 >> 4);
+        *b = (b5 << 3) | (b5 >> 2);
+        *a = 255;
+    }
+}
+
+/* The texture at (u8, v8), in 1/256 texel, as 8-bit r, g, b, a (out[0..3]):
+ * the texel containing it, or with ZL_FILTER_BILINEAR the four texels
+ * around p = c - 1/2 weighted by the fractions of p in 1/256 (zline.h,
+ * TEXTURE FILTERING). Every product stays below 2^24: 32-bit sums. */
+static void tex_sample(const zl_texture *tex, unsigned filter, int64_t u8, int64_t v8, unsigned *out)
+{
+    if (filter != ZL_FILTER_BILINEAR) {
+        uint16_t tx = tex->texels[(size_t)texel_index_any(v8, tex->height, tex->wrap_t) * tex->stride +
+                                  texel_index_any(u8, tex->width, tex->wrap_s)];
+        unpack_texel(tx, tex->format, &out[0], &out[1], &out[2], &out[3]);
+        return;
+    }
+    {
+        const int64_t pu = u8 - 128, pv = v8 - 128;
+        /* the fraction of a floor: conversion to unsigned is modulo 2^N, so
+         * the low byte of a negative p is its floor's fraction too */
+        const unsigned fx = (unsigned)(uint64_t)pu & 255u, fy = (unsigned)(uint64_t)pv & 255u;
+        const size_t x0 = texel_index_any(pu, tex->width, tex->wrap_s);
+        const size_t x1 = texel_index_any(pu + 256, tex->width, tex->wrap_s);
+        const uint16_t *r0 = tex->texels + (size_t)texel_index_any(pv, tex->height, tex->wrap_t) * tex->stride;
+        const uint16_t *r1 = tex->texels + (size_t)texel_index_any(pv + 256, tex->height, tex->wrap_t) * tex->stride;
+        unsigned c[4][4], k;
+        unpack_texel(r0[x0], tex->format, &c[0][0], &c[0][1], &c[0][2], &c[0][3]);
+        unpack_texel(r0[x1], tex->format, &c[1][0], &c[1][1], &c[1][2], &c[1][3]);
+        unpack_texel(r1[x0], tex->format, &c[2][0], &c[2][1], &c[2][2], &c[2][3]);
+        unpack_texel(r1[x1], tex->format, &c[3][0], &c[3][1], &c[3][2], &c[3][3]);
+        for (k = 0; k < 4; k++) {
+            unsigned top = c[0][k] * (256u - fx) + c[1][k] * fx, bottom = c[2][k] * (256u - fx) + c[3][k] * fx;
+            out[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+        }
+    }
+}
+
+/* Blend (r, g, b) with alpha a (1..255) into the pixel at p (see BLENDING
+ * in zline.h): the old pixel widened to 8 bits per channel, the result
+ * packed and written through the colour mask. */
+static void blend_pixel(uint8_t *p, const zl_span_state *ss, unsigned mode, const unsigned *src, unsigned a)
+{
+    unsigned old[3], out[3], k;
+    uint8_t pix[3] = {0, 0, 0};
+    if (ss->format == ZL_FORMAT_RGB888) {
+        old[0] = p[0];
+        old[1] = p[1];
+        old[2] = p[2];
+    } else {
+        uint16_t v;
+        unsigned a8;
+        if (ss->format == ZL_FORMAT_RGB565)
+            memcpy(&v, p, 2);
+        else
+            v = (uint16_t)(((unsigned)p[0] << 8) | p[1]);
+        unpack_texel(v, ZL_TEXEL_RGB565, &old[0], &old[1], &old[2], &a8);
+    }
+    for (k = 0; k < 3; k++) {
+        if (mode == ZL_BLEND_ADD) {
+            unsigned v = old[k] + div255(src[k] * a);
+            out[k] = v > 255u ? 255u : v;
+        } else {
+            out[k] = div255(src[k] * a + old[k] * (255u - a));
+        }
+    }
+    pack_color((zl_format)ss->format, out[0], out[1], out[2], pix);
+    put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
 /* (a q) / q for the perspective planes: one reciprocal R = 2^44 / Q and a
@@ -33,14 +139,6 @@ static inline uint64_t persp_recip(int64_t q)
 static inline int64_t persp_apply(int64_t a, uint64_t r)
 {
     return zl_floor_shift64(a * (int64_t)r, 20);
-}
-
-static void unpack565(uint16_t t, unsigned *r, unsigned *g, unsigned *b)
-{
-    unsigned r5 = t >> 11, g6 = (t >> 5) & 63u, b5 = t & 31u;
-    *r = (r5 << 3) | (r5 >> 2);
-    *g = (g6 << 2) | (g6 >> 4);
-    *b = (b5 << 3) | (b5 >> 2);
 }
 
 /* Whether an affine coordinate plane (Q12 texels, stepped per pixel) stays
@@ -107,13 +205,160 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
     }
 }
 
+/* texel_index for an affine Q12 coordinate of 32 bits (power-of-two size). */
+static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsigned wrap)
+{
+    int32_t i = zl_floor_shift32(c12, 12);
+    if (wrap == ZL_WRAP_CLAMP)
+        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
+    return (uint32_t)i & (uint32_t)(size - 1u);
+}
+
+/*
+ * Blended spans in their own loop (the common case of BLENDING): native
+ * RGB565, all channels, depth LESS or LEQUAL, a flat colour (src, already
+ * lit) or an unlit affine texture of power-of-two size; exactly the values
+ * of the general loop (blend_pixel), with the constant parts hoisted.
+ */
+static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwrite, const zl_texture *tex,
+                                           unsigned alpha, const unsigned *src, uint16_t *crow, uint16_t *zrow,
+                                           int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
+                                           int32_t dv)
+{
+    unsigned sa[3], k, na = 255u - alpha;
+    int32_t i;
+    for (k = 0; k < 3; k++) /* flat: src a, or for ADD its rounded share */
+        sa[k] = mode == ZL_BLEND_ADD ? div255(src[k] * alpha) : src[k] * alpha;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zrow[i])) {
+            unsigned c[3], a = alpha, old = crow[i], o[3];
+            const unsigned *add = sa;
+            unsigned mul[3];
+            if (tex != NULL) {
+                unsigned ta;
+                /* power-of-two sizes (the caller checked), wrap or clamp per axis */
+                uint16_t tx = tex->texels[(size_t)texel_wrap32(v, tex->height, tex->wrap_t) * tex->stride +
+                                          texel_wrap32(u, tex->width, tex->wrap_s)];
+                unpack_texel(tx, tex->format, &c[0], &c[1], &c[2], &ta);
+                if (tex->format == ZL_TEXEL_RGBA4444)
+                    a = div255(alpha * ta);
+                for (k = 0; k < 3; k++)
+                    mul[k] = mode == ZL_BLEND_ADD ? div255(c[k] * a) : c[k] * a;
+                add = mul;
+            }
+            if (a != 0) {
+                unsigned r5 = old >> 11, g6 = (old >> 5) & 63u, b5 = old & 31u, nk = tex != NULL ? 255u - a : na;
+                o[0] = (r5 << 3) | (r5 >> 2);
+                o[1] = (g6 << 2) | (g6 >> 4);
+                o[2] = (b5 << 3) | (b5 >> 2);
+                for (k = 0; k < 3; k++) {
+                    if (mode == ZL_BLEND_ADD) {
+                        unsigned t = o[k] + add[k];
+                        o[k] = t > 255u ? 255u : t;
+                    } else {
+                        o[k] = div255(add[k] + o[k] * nk);
+                    }
+                }
+                if (zwrite)
+                    zrow[i] = (uint16_t)d;
+                crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
+            }
+        }
+        z += dz;
+        u += du;
+        v += dv;
+    }
+}
+
+/* One bilinear tap index of a power-of-two axis, from its floor index. */
+static ZL_ALWAYS_INLINE uint32_t tap_pow2(int32_t i, uint16_t size, unsigned wrap)
+{
+    if (wrap == ZL_WRAP_CLAMP)
+        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
+    return (uint32_t)i & (uint32_t)(size - 1u);
+}
+
+/* A 565 texel's channel widened to 8 bits (shift, mask, replicate). */
+static ZL_ALWAYS_INLINE unsigned ch565(unsigned t, unsigned k)
+{
+    unsigned c;
+    if (k == 0) {
+        c = t >> 11;
+        return (c << 3) | (c >> 2);
+    }
+    if (k == 1) {
+        c = (t >> 5) & 63u;
+        return (c << 2) | (c >> 4);
+    }
+    c = t & 31u;
+    return (c << 3) | (c >> 2);
+}
+
+/*
+ * Bilinear spans in their own loop: an unlit affine RGB565 texture of
+ * power-of-two size, unblended, into native RGB565 with all channels and
+ * depth LESS or LEQUAL with writes; exactly tex_sample's values.
+ */
+static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *tex, uint16_t *crow, uint16_t *zrow,
+                                              int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
+                                              int32_t dv)
+{
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (depth_pass(func, d, zrow[i])) {
+            int32_t pu = zl_floor_shift32(u, 4) - 128, pv = zl_floor_shift32(v, 4) - 128;
+            unsigned fx = (uint32_t)pu & 255u, fy = (uint32_t)pv & 255u, k, o[3];
+            int32_t iu = zl_floor_shift32(pu, 8), iv = zl_floor_shift32(pv, 8);
+            uint32_t x0 = tap_pow2(iu, tex->width, tex->wrap_s), x1 = tap_pow2(iu + 1, tex->width, tex->wrap_s);
+            const uint16_t *r0 = tex->texels + (size_t)tap_pow2(iv, tex->height, tex->wrap_t) * tex->stride;
+            const uint16_t *r1 = tex->texels + (size_t)tap_pow2(iv + 1, tex->height, tex->wrap_t) * tex->stride;
+            unsigned t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
+            for (k = 0; k < 3; k++) {
+                unsigned top = ch565(t00, k) * (256u - fx) + ch565(t10, k) * fx;
+                unsigned bottom = ch565(t01, k) * (256u - fx) + ch565(t11, k) * fx;
+                o[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+            }
+            zrow[i] = (uint16_t)d;
+            crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
+        }
+        z += dz;
+        u += du;
+        v += dv;
+    }
+}
+
+/* span_blend565 with the depth function and blend mode as constants. */
+static void span_blend565_any(unsigned func, unsigned mode, int zwrite, const zl_texture *tex, unsigned alpha,
+                              const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                              int32_t u, int32_t du, int32_t v, int32_t dv)
+{
+    if (func == ZL_LESS) {
+        if (mode == ZL_BLEND_ALPHA)
+            span_blend565(ZL_LESS, ZL_BLEND_ALPHA, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+        else
+            span_blend565(ZL_LESS, ZL_BLEND_ADD, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+    } else {
+        if (mode == ZL_BLEND_ALPHA)
+            span_blend565(ZL_LEQUAL, ZL_BLEND_ALPHA, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+        else
+            span_blend565(ZL_LEQUAL, ZL_BLEND_ADD, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
+    }
+}
+
 static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texplanes *tp, const zl_style *sty,
                         const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
 {
     const zl_texture *tex = sty->texcoords != NULL ? sty->texture : NULL;
     const int64_t f16 = 1 << (ZL_ATTR_FRAC - 16), big = (int64_t)1 << 40;
     int32_t x0 = t->left.x, x1 = t->right.x, i, n;
-    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE, pg = g != NULL && ss->gouraud;
+    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE, pg = g != NULL && ss->gouraud && sty->persp_gouraud;
+    int lg = g != NULL && ss->gouraud && !sty->persp_gouraud; /* screen-linear Gouraud (blending) */
+    unsigned blend = sty->blend;
+    uint32_t lc[3] = {0, 0, 0}, ldc[3] = {0, 0, 0};
+    unsigned a, tc[4] = {0, 0, 0, 0}, filter = sty->tex_filter;
+    int sampled;
     unsigned every = sty->tex_every > 1 ? sty->tex_every : 1u, shift = 0, func = ss->func, light = t->light;
     uint32_t z, dz;
     int64_t U = 0, V = 0, Q, dU = 0, dV = 0, dQ, C[3] = {0, 0, 0}, dC[3] = {0, 0, 0};
@@ -145,11 +390,20 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
             C[k] = attr_at(&g->c[k], x0, t->ax, -big, big);
             dC[k] = g->c[k].dx;
         }
+    if (lg)
+        for (k = 0; k < 3; k++) {
+            /* as row_span's Gouraud span (zl_rows.c): Q16 steppers, rounding half added */
+            int64_t v = attr_at(&g->c[k], x0, t->ax, 0, (int64_t)255 << ZL_ATTR_FRAC);
+            lc[k] = (uint32_t)zl_floor_shift64(v, ZL_ATTR_FRAC - 16) + (1u << 15);
+            ldc[k] = step32(g->c[k].dx, ZL_ATTR_FRAC - 16);
+        }
     crow = crow ? crow + (size_t)x0 * ss->bpp : NULL;
     zrow = zrow ? zrow + x0 : NULL;
     if ((crow == NULL && ss->bpp != 0) || (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS)))
         return; /* as in row_span */
-    if (tex != NULL && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
+    if (tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_NEAREST && tex->format == ZL_TEXEL_RGB565 &&
+        is_pow2(tex->width) &&
+        is_pow2(tex->height) && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
         (persp || (affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
         /* The common case in its own loop: the texel is the pixel (RGB565,
@@ -160,6 +414,32 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         else
             span_tex565(ZL_LEQUAL, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
                         dQ);
+        return;
+    }
+    if (tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_BILINEAR && !persp && light == 255 &&
+        tex->format == ZL_TEXEL_RGB565 && is_pow2(tex->width) && is_pow2(tex->height) &&
+        ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+        ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) && affine_fits(U, dU, n) &&
+        affine_fits(V, dV, n)) {
+        if (func == ZL_LESS)
+            span_bilinear565(ZL_LESS, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
+                             (int32_t)V, (int32_t)dV);
+        else
+            span_bilinear565(ZL_LEQUAL, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
+                             (int32_t)V, (int32_t)dV);
+        return;
+    }
+    if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
+        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
+        (tex == NULL || (!persp && light == 255 && filter == ZL_FILTER_NEAREST && is_pow2(tex->width) && is_pow2(tex->height) &&
+                         affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
+        unsigned src[3];
+        src[0] = t->rgb[0];
+        src[1] = t->rgb[1];
+        src[2] = t->rgb[2];
+        if (sty->alpha != 0 || tex != NULL) /* constant alpha 0 discards every fragment */
+            span_blend565_any(func, blend, ss->zwrite, tex, sty->alpha, src, (uint16_t *)(void *)crow, zrow, n, z, dz,
+                              (int32_t)U, (int32_t)dU, (int32_t)V, (int32_t)dV);
         return;
     }
     for (i = 0; i < n; i++) {
@@ -181,15 +461,28 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                 sv = zl_floor_shift64(persp_apply(V + (int64_t)every * dV, r2) - v8, shift);
             }
         }
-        if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
+        /* blending's alpha; a fragment of alpha 0 is discarded (no colour, no depth) */
+        sampled = 0;
+        a = 255u;
+        if (blend != ZL_BLEND_OFF) {
+            a = sty->alpha;
+            if (tex != NULL && tex->format == ZL_TEXEL_RGBA4444) {
+                tex_sample(tex, filter, u8, v8, tc);
+                sampled = 1;
+                a = div255(a * tc[3]);
+            }
+        }
+        if (a != 0 && (func == ZL_ALWAYS || depth_pass(func, d, zrow[i]))) {
             if (ss->zwrite)
                 zrow[i] = (uint16_t)d;
             if (ss->bpp != 0) {
                 unsigned r, gg, b;
                 if (tex != NULL) {
-                    uint16_t tx = tex->texels[(size_t)texel_index(v8, tex->height, tex->wrap_t) * tex->stride +
-                                              texel_index(u8, tex->width, tex->wrap_s)];
-                    unpack565(tx, &r, &gg, &b);
+                    if (!sampled)
+                        tex_sample(tex, filter, u8, v8, tc);
+                    r = tc[0];
+                    gg = tc[1];
+                    b = tc[2];
                     if (light != 255) {
                         r = (r * light + 127) / 255;
                         gg = (gg * light + 127) / 255;
@@ -206,13 +499,25 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                     r = (unsigned)cc[0];
                     gg = (unsigned)cc[1];
                     b = (unsigned)cc[2];
+                } else if (lg) {
+                    r = channel_of(lc[0]);
+                    gg = channel_of(lc[1]);
+                    b = channel_of(lc[2]);
                 } else {
                     r = t->rgb[0];
                     gg = t->rgb[1];
                     b = t->rgb[2];
                 }
-                pack_color((zl_format)ss->format, r, gg, b, pix);
-                put_pixel(crow + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+                if (blend != ZL_BLEND_OFF) {
+                    unsigned src[3];
+                    src[0] = r;
+                    src[1] = gg;
+                    src[2] = b;
+                    blend_pixel(crow + (size_t)i * ss->bpp, ss, blend, src, a);
+                } else {
+                    pack_color((zl_format)ss->format, r, gg, b, pix);
+                    put_pixel(crow + (size_t)i * ss->bpp, ss->bpp, pix, ss->keep);
+                }
             }
         }
         z += dz;
@@ -221,8 +526,10 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         V += dV;
         u8 += su;
         v8 += sv;
-        for (k = 0; k < 3; k++)
+        for (k = 0; k < 3; k++) {
             C[k] += dC[k];
+            lc[k] += ldc[k];
+        }
     }
 }
 
@@ -232,7 +539,7 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
     int k;
     if (tp == NULL || !zl_style_needs_planes(sty))
         return zl_tri_row(t, g, ss, color_row, depth_row);
-    row_span_ex(t, sty->persp_gouraud ? g : NULL, tp, sty, ss, color_row, depth_row);
+    row_span_ex(t, sty->persp_gouraud || sty->blend != ZL_BLEND_OFF ? g : NULL, tp, sty, ss, color_row, depth_row);
     edge_step(&t->left);
     edge_step(&t->right);
     t->z.row += t->z.dy;

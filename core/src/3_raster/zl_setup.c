@@ -164,7 +164,8 @@ int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert 
 
 int zl_style_needs_planes(const zl_style *sty)
 {
-    return sty != NULL && ((sty->texture != NULL && sty->texcoords != NULL) || sty->persp_gouraud);
+    return sty != NULL &&
+           ((sty->texture != NULL && sty->texcoords != NULL) || sty->persp_gouraud || sty->blend != ZL_BLEND_OFF);
 }
 
 /* Texture and perspective planes (see zl_texplanes). q_k = 2^24 wmin / w_k:

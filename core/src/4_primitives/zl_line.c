@@ -34,11 +34,14 @@ void zl_style_default(zl_style *s)
     s->toon_bands = 0;
     s->toon_colors = NULL;
     s->line_aa = 0;
+    s->blend = ZL_BLEND_OFF;
+    s->alpha = 255;
+    s->tex_filter = ZL_FILTER_NEAREST;
 }
 
-static int pow2_size(uint16_t n)
+static int tex_size(uint16_t n)
 {
-    return n >= 1 && n <= 4096 && (n & (n - 1u)) == 0;
+    return n >= 1 && n <= 4096;
 }
 
 zl_status zl_style_check(const zl_style *s)
@@ -53,13 +56,16 @@ zl_status zl_style_check(const zl_style *s)
         return ZL_ERR_RANGE;
     if (s->tex_mapping > ZL_TEX_PERSPECTIVE || s->persp_gouraud > 1 || s->line_aa > 1 || (s->toon_bands > 0 && s->toon_colors == NULL))
         return ZL_ERR_ARG;
+    if (s->blend > ZL_BLEND_ADD || s->tex_filter > ZL_FILTER_BILINEAR)
+        return ZL_ERR_ARG;
     if (s->tex_every > 1 && (s->tex_every > 64 || (s->tex_every & (s->tex_every - 1u)) != 0))
         return ZL_ERR_RANGE;
     if (s->texture != NULL) {
         const zl_texture *t = s->texture;
-        if (t->texels == NULL || s->texcoords == NULL || t->wrap_s > ZL_WRAP_CLAMP || t->wrap_t > ZL_WRAP_CLAMP)
+        if (t->texels == NULL || s->texcoords == NULL || t->wrap_s > ZL_WRAP_CLAMP || t->wrap_t > ZL_WRAP_CLAMP ||
+            t->format > ZL_TEXEL_RGBA4444)
             return ZL_ERR_ARG;
-        if (!pow2_size(t->width) || !pow2_size(t->height) || t->stride < t->width)
+        if (!tex_size(t->width) || !tex_size(t->height) || t->stride < t->width)
             return ZL_ERR_SIZE;
     }
     return ZL_OK;

@@ -109,7 +109,7 @@ static int is_default_style(const zl_style *s)
     return s->polygon_front == d.polygon_front && s->polygon_back == d.polygon_back &&
            s->point_size == d.point_size && s->line_algo == d.line_algo && s->offset_factor == d.offset_factor &&
            s->offset_units == d.offset_units && s->texture == d.texture && s->persp_gouraud == d.persp_gouraud &&
-           s->toon_bands == d.toon_bands && s->line_aa == d.line_aa;
+           s->toon_bands == d.toon_bands && s->line_aa == d.line_aa && s->blend == d.blend;
 }
 
 /* Record the style of mesh record mi (default when NULL), and lines. */

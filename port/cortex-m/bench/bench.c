@@ -395,7 +395,7 @@ int main(void)
     printf("# %s: marks are numbered from 0; INTERVAL tag scene key instructions mark_from mark_to\n", BENCH_TAG);
     for (which = 0; which < SCENE_COUNT; which++) {
         scene s;
-        if (which == SCENE_TETRA || which == SCENE_BUNNY_SMOOTH)
+        if (which == SCENE_TETRA || which == SCENE_BUNNY_SMOOTH || which == SCENE_TEXTURED)
             continue; /* golden test only (bunny_smooth: bench_smooth.c) */
         if (scene_make(&s, which) != 0) {
             printf("bench: scene %d: cannot build the camera\n", which);

@@ -10,6 +10,12 @@
  *   tex_persp     the same, perspective-correct, a reciprocal every pixel
  *   tex_persp16   the same, exact every 16 pixels
  *   flat          the same quad untextured, for comparison
+ *   tex_alpha     (issue 15) the textured quad, affine, with an RGBA4444
+ *                 texture (no texel of alpha 0) alpha-blended over the
+ *                 cleared frame: texel alpha times constant alpha 200
+ *   blend         the flat quad alpha-blended at constant alpha 128
+ *   blend_add     the flat quad blended additively at constant alpha 128
+ *   tex_bilinear  the textured quad (RGB565), affine, bilinear filtering
  * Each count is one whole zl_draw_* call (setup included) divided by the
  * pixels written; the clear is not counted. Prints "FEATURE tag name
  * instructions pixels per_pixel_x100".
@@ -30,6 +36,7 @@ enum { W = 320, H = 240, TS = 64 };
 static uint16_t color_buf[W * H];
 static uint16_t depth_buf[W * H];
 static uint16_t texels[TS * TS];
+static uint16_t texels4444[TS * TS];
 
 static zl_context ctx;
 
@@ -98,7 +105,19 @@ static const zl_fixed quad_pos[] = {0, 0, ZL_FX_HALF, ZL_FX_INT(W), 0, ZL_FX_HAL
 static const zl_fixed quad_uv[] = {0, 0, ZL_FX_INT(4), 0, ZL_FX_INT(4), ZL_FX_INT(3), 0, ZL_FX_INT(3)};
 static const uint16_t quad_idx[] = {0, 1, 2, 0, 2, 3};
 
+/* blend: zl_blend of the draw; with a texture, the RGBA4444 one */
+static int run_quad_blend(const char *name, int textured, unsigned mapping, unsigned every, unsigned blend,
+                          unsigned alpha);
+
+static int bilinear; /* the next textured quads filter bilinearly */
+
 static int run_quad(const char *name, int textured, unsigned mapping, unsigned every)
+{
+    return run_quad_blend(name, textured, mapping, every, ZL_BLEND_OFF, 255);
+}
+
+static int run_quad_blend(const char *name, int textured, unsigned mapping, unsigned every, unsigned blend,
+                          unsigned alpha)
 {
     zl_mesh m = {quad_pos, quad_idx, NULL, NULL, 4, 2};
     zl_texture tex;
@@ -109,12 +128,19 @@ static int run_quad(const char *name, int textured, unsigned mapping, unsigned e
     tex.width = TS;
     tex.height = TS;
     tex.stride = TS;
+    if (blend != ZL_BLEND_OFF) {
+        tex.texels = texels4444;
+        tex.format = ZL_TEXEL_RGBA4444;
+    }
     reset();
+    ctx.style.blend = (uint8_t)blend;
+    ctx.style.alpha = (uint8_t)alpha;
     if (textured) {
         ctx.style.texture = &tex;
         ctx.style.texcoords = quad_uv;
         ctx.style.tex_mapping = (uint8_t)mapping;
         ctx.style.tex_every = (uint8_t)every;
+        ctx.style.tex_filter = (uint8_t)(bilinear ? ZL_FILTER_BILINEAR : ZL_FILTER_NEAREST);
     }
     first = bench_stamp_count();
     mark();
@@ -134,6 +160,8 @@ int main(void)
         return 100;
     for (i = 0; i < TS * TS; i++)
         texels[i] = (uint16_t)((((i % TS) / 8 + (i / TS) / 8) & 1) ? 0xFFE0u : 0x001Fu);
+    for (i = 0; i < TS * TS; i++) /* the checker with alpha 1..15 along each row */
+        texels4444[i] = (uint16_t)((((i % TS) / 8 + (i / TS) / 8) & 1) ? 0xFF00u : 0x00F0u) | (1u + (i % 15u));
     memset(&tg, 0, sizeof tg);
     tg.color = color_buf;
     tg.color_stride = W * 2;
@@ -151,5 +179,10 @@ int main(void)
     failed += run_quad("tex_affine", 1, ZL_TEX_AFFINE, 0);
     failed += run_quad("tex_persp", 1, ZL_TEX_PERSPECTIVE, 0);
     failed += run_quad("tex_persp16", 1, ZL_TEX_PERSPECTIVE, 16);
+    failed += run_quad_blend("tex_alpha", 1, ZL_TEX_AFFINE, 0, ZL_BLEND_ALPHA, 200);
+    failed += run_quad_blend("blend", 0, 0, 0, ZL_BLEND_ALPHA, 128);
+    failed += run_quad_blend("blend_add", 0, 0, 0, ZL_BLEND_ADD, 128);
+    bilinear = 1;
+    failed += run_quad("tex_bilinear", 1, ZL_TEX_AFFINE, 0);
     return failed;
 }

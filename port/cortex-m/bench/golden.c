@@ -57,6 +57,7 @@ static int save(const char *prefix, const char *scene_name, const char *mode)
 
 static int render_frame(const scene *s)
 {
+    unsigned k;
     zl_context ctx;
     zl_target t;
     zl_rgb bg = {20, 24, 32};
@@ -73,13 +74,37 @@ static int render_frame(const scene *s)
     ctx.state = s->state;
     if (zl_clear(&ctx, bg, 65535) != ZL_OK)
         return 1;
-    return zl_draw_mesh(&ctx, &s->mesh, &s->mvp) != ZL_OK;
+    if (s->styled)
+        ctx.style = s->style;
+    if (zl_draw_mesh(&ctx, &s->mesh, &s->mvp) != ZL_OK)
+        return 1;
+    for (k = 0; k < s->extra_count; k++) {
+        ctx.state = s->extra_state[k];
+        ctx.style = s->extra_style[k];
+        if (zl_draw_mesh(&ctx, &s->extra_mesh[k], &s->extra_mvp[k]) != ZL_OK)
+            return 1;
+    }
+    return 0;
+}
+
+/* Submit a scene's meshes to a frame. */
+static zl_status add_scene(zl_frame *f, const scene *s)
+{
+    zl_status st;
+    unsigned k;
+    if (!s->styled)
+        return zl_frame_add_mesh(f, &s->mesh, &s->mvp, &s->state);
+    st = zl_frame_add_mesh_styled(f, &s->mesh, &s->mvp, &s->state, &s->style);
+    for (k = 0; k < s->extra_count && st == ZL_OK; k++)
+        st = zl_frame_add_mesh_styled(f, &s->extra_mesh[k], &s->extra_mvp[k], &s->extra_state[k], &s->extra_style[k]);
+    return st;
 }
 
 /* Scanline/band configuration for a scene, capacities exactly what it needs
  * (zl_frame_needs after a first planning with generous ones). */
 static int config_for(const scene *s, uint16_t band_rows, zl_frame_config *cfg)
 {
+    unsigned k;
     zl_frame f;
     zl_band b;
     zl_frame_needs_t needs;
@@ -92,12 +117,18 @@ static int config_for(const scene *s, uint16_t band_rows, zl_frame_config *cfg)
     cfg->format = ZL_FORMAT_RGB565;
     cfg->color_buffers = 1;
     cfg->gouraud = s->gouraud;
-    cfg->max_meshes = 1;
+    cfg->max_meshes = (uint16_t)(1u + s->extra_count);
     cfg->max_vertices = s->mesh.vertex_count;
     cfg->max_triangles = s->mesh.triangle_count;
+    for (k = 0; k < s->extra_count; k++) {
+        cfg->max_vertices += s->extra_mesh[k].vertex_count;
+        cfg->max_triangles += s->extra_mesh[k].triangle_count;
+    }
     cfg->max_active = 512;
+    cfg->styled = s->styled;
+    cfg->textured = s->styled;
     if (zl_frame_bytes(cfg) > sizeof work || zl_frame_begin(&f, cfg, work, sizeof work, bg, 65535) != ZL_OK ||
-        zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK)
+        add_scene(&f, s) != ZL_OK)
         return 1;
     st = zl_frame_next_band(&f, &b); /* plans the frame */
     if (st != ZL_OK && st != ZL_DONE && st != ZL_ERR_CAPACITY)
@@ -119,8 +150,7 @@ static int render_bands(const scene *s, uint16_t band_rows)
         printf("golden: %s: cannot plan the frame\n", s->name);
         return 1;
     }
-    if (zl_frame_begin(&f, &cfg, work, zl_frame_bytes(&cfg), bg, 65535) != ZL_OK ||
-        zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK)
+    if (zl_frame_begin(&f, &cfg, work, zl_frame_bytes(&cfg), bg, 65535) != ZL_OK || add_scene(&f, s) != ZL_OK)
         return 1;
     while ((st = zl_frame_next_band(&f, &b)) == ZL_OK) {
         uint16_t r;
@@ -155,7 +185,7 @@ int main(void)
             printf("golden: %s scanline mode failed\n", s.name);
             failed++;
         }
-        if (which == SCENE_BUNNY || which == SCENE_TETRA || which == SCENE_BUNNY_SMOOTH) {
+        if (which == SCENE_BUNNY || which == SCENE_TETRA || which == SCENE_BUNNY_SMOOTH || which == SCENE_TEXTURED) {
             memset(image, 0, sizeof image);
             if (render_bands(&s, 7) || save(prefix, s.name, "band7")) {
                 printf("golden: %s band mode failed\n", s.name);

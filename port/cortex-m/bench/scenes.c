@@ -4,6 +4,9 @@
 #include <string.h>
 
 #include "bunny_mesh.h"
+#include "checker_texture.h"
+#include "floor_mesh.h"
+#include "glass_texture.h"
 #include "grid_mesh.h"
 #include "tetra_mesh.h"
 
@@ -97,6 +100,69 @@ static int bunny_smooth(scene *s)
     return 0;
 }
 
+/* The textured scene's camera: from (0, 1.2, 1.5) towards (0, 0, -6). */
+static int floor_camera(zl_mat4 *vp)
+{
+    zl_mat4 proj, view;
+    zl_vec3 eye = {0, ZL_FX_ONE * 6 / 5, ZL_FX_ONE * 3 / 2}, target = {0, 0, -ZL_FX_INT(6)}, up = {0, ZL_FX_ONE, 0};
+    if (zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(60)), ZL_FX_INT(SCENE_W) / SCENE_H,
+                            ZL_FX_ONE / 10, ZL_FX_INT(100)) != ZL_OK ||
+        zl_mat4_look_at(&view, eye, target, up) != ZL_OK)
+        return -1;
+    zl_mat4_mul(vp, &proj, &view);
+    return 0;
+}
+
+/* vp times a translation by (0, y, 0) and a scale of x by sx. */
+static void lifted(zl_mat4 *out, const zl_mat4 *vp, zl_fixed y, zl_fixed sx)
+{
+    zl_mat4 t, sc, m;
+    zl_vec3 ty = {0, y, 0}, s3 = {sx, ZL_FX_ONE, ZL_FX_ONE};
+    zl_mat4_translate(&t, ty);
+    zl_mat4_scale(&sc, s3);
+    zl_mat4_mul(&m, &t, &sc);
+    zl_mat4_mul(out, vp, &m);
+}
+
+static int textured_scene(scene *s)
+{
+    zl_mat4 vp;
+    if (floor_camera(&vp) != 0)
+        return -1;
+    s->name = "textured";
+    s->mesh = floor_mesh;
+    s->mvp = vp;
+    s->styled = 1;
+    zl_style_default(&s->style);
+    s->style.texture = &checker_texture;
+    s->style.texcoords = floor_texcoords;
+    s->style.tex_mapping = ZL_TEX_PERSPECTIVE;
+    s->extra_count = 2;
+    /* glass: RGBA4444 texels, alpha blended, no depth writes */
+    s->extra_mesh[0] = floor_mesh;
+    lifted(&s->extra_mvp[0], &vp, ZL_FX_HALF, ZL_FX_ONE);
+    zl_state_default(&s->extra_state[0]);
+    s->extra_state[0].depth_write = 0;
+    zl_style_default(&s->extra_style[0]);
+    s->extra_style[0].texture = &glass_texture;
+    s->extra_style[0].texcoords = floor_texcoords;
+    s->extra_style[0].tex_mapping = ZL_TEX_PERSPECTIVE;
+    s->extra_style[0].blend = ZL_BLEND_ALPHA;
+    s->extra_style[0].alpha = 200;
+    /* an additive band between the two */
+    s->extra_mesh[1] = floor_mesh;
+    lifted(&s->extra_mvp[1], &vp, ZL_FX_ONE / 4, ZL_FX_ONE / 4);
+    zl_state_default(&s->extra_state[1]);
+    s->extra_state[1].depth_write = 0;
+    s->extra_state[1].color.r = 40;
+    s->extra_state[1].color.g = 90;
+    s->extra_state[1].color.b = 200;
+    zl_style_default(&s->extra_style[1]);
+    s->extra_style[1].blend = ZL_BLEND_ADD;
+    s->extra_style[1].alpha = 120;
+    return 0;
+}
+
 int scene_make(scene *s, int which)
 {
     memset(s, 0, sizeof *s);
@@ -153,6 +219,8 @@ int scene_make(scene *s, int which)
         s->gouraud = 1;
         return camera(&s->mvp, eye);
     }
+    case SCENE_TEXTURED:
+        return textured_scene(s);
     default:
         return -1;
     }

@@ -20,6 +20,13 @@
  *                vertex colours Gouraud-interpolated
  *   tetra        (golden test only) a vertex-coloured model close to the
  *                camera: near-plane clipping and Gouraud shading
+ *   textured     (golden test only, issue 15) floor.obj (texture coordinates
+ *                kept by zline-obj2c) with checker.ppm (zline-img2c, RGB565,
+ *                64x64), perspective-correct; over it two blended copies of
+ *                the floor (depth writes off): a "glass" plane 0.5 above it
+ *                with rgba5x3.ppm + alpha as RGBA4444 (5x3: not a power of
+ *                two), alpha blended at constant alpha 200, and a narrow
+ *                additive band (flat colour, constant alpha 120)
  * The meshes are const (flash): bunny, grid and tetra are generated from OBJ
  * files by zline-obj2c at build time.
  */
@@ -31,7 +38,11 @@
 #define SCENE_W 320
 #define SCENE_H 240
 
-enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_TETRA, SCENE_BUNNY_SMOOTH, SCENE_COUNT };
+enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_TETRA, SCENE_BUNNY_SMOOTH, SCENE_TEXTURED,
+       SCENE_COUNT };
+
+/* The most meshes drawn after the first one (styled scenes). */
+#define SCENE_MAX_EXTRA 2
 
 typedef struct {
     const char *name;
@@ -46,6 +57,15 @@ typedef struct {
     zl_mat4 modelview;
     const int16_t *normals;
     uint8_t *lit;
+    /* Styled scenes (textures, blending): the first mesh's style, then
+     * extra_count more meshes drawn in order after it. Zero for the others. */
+    uint8_t styled;
+    zl_style style;
+    uint8_t extra_count;
+    zl_mesh extra_mesh[SCENE_MAX_EXTRA];
+    zl_mat4 extra_mvp[SCENE_MAX_EXTRA];
+    zl_state extra_state[SCENE_MAX_EXTRA];
+    zl_style extra_style[SCENE_MAX_EXTRA];
 } scene;
 
 /* Build scene `which` (SCENE_*). Returns 0, or -1 if the camera cannot be built. */

@@ -2,19 +2,22 @@
  * zline-obj2c round trip: the arrays it generated at build time (compiled
  * into this test) equal, element for element, what the OBJ loader gives for
  * the same file and options.
- *   test_obj2c BUNNY.obj TETRA.obj
+ *   test_obj2c BUNNY.obj TETRA.obj [FLOOR.obj]
+ * FLOOR.obj (port/host/models/floor.obj) has texture coordinates: the
+ * generated texcoords equal zl_obj_load_file_tex's and the file's vt lines.
  */
 #include <stdio.h>
 #include <string.h>
 
 #include "bunny_mesh.h"
+#include "floor_mesh.h"
 #include "tetra_mesh.h"
 #include "bunny_n_mesh.h"
 #include "tetra_nc_mesh.h"
 #include "unity.h"
 #include "zl_obj.h"
 
-static const char *bunny_path, *tetra_path;
+static const char *bunny_path, *tetra_path, *floor_path;
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -86,18 +89,46 @@ static void test_tetra_without_colors(void)
     check(tetra_path, 0, &tetra_nc_mesh, TETRA_NC_VERTEX_COUNT, TETRA_NC_TRIANGLE_COUNT, 0);
 }
 
+/* The textured floor: 4 vertices (no vertex uses two vt), texcoords
+ * (s, t) = (u, 1 - v) of its vt lines, as the loader gives them. */
+static void test_floor_texcoords(void)
+{
+    zl_obj obj;
+    char msg[256];
+    unsigned k;
+    TEST_ASSERT_EQUAL_INT(1, FLOOR_HAS_TEXCOORDS);
+    TEST_ASSERT_EQUAL_INT(0, TETRA_HAS_TEXCOORDS);
+    TEST_ASSERT_EQUAL_UINT(4, FLOOR_VERTEX_COUNT);
+    /* the file pairs x = -4, 4 with u = 0, 2 and z = 0, -16 with v = 0, 4:
+     * s = (x + 4) / 4, t = 1 - v = 1 + z / 4 */
+    for (k = 0; k < 4; k++) {
+        TEST_ASSERT_EQUAL_INT32((floor_positions[3 * k] + ZL_FX_INT(4)) / 4, floor_texcoords[2 * k]);
+        TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE + floor_positions[3 * k + 2] / 4, floor_texcoords[2 * k + 1]);
+    }
+    if (floor_path == NULL)
+        return;
+    TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_OBJ_OK, zl_obj_load_file_tex(&obj, floor_path, NULL, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_UINT(obj.vertex_count, FLOOR_VERTEX_COUNT);
+    TEST_ASSERT_EQUAL_MEMORY(obj.positions, floor_positions, 3 * 4 * obj.vertex_count);
+    TEST_ASSERT_EQUAL_MEMORY(obj.indices, floor_indices, 3 * 2 * obj.triangle_count);
+    TEST_ASSERT_EQUAL_MEMORY(obj.texcoords, floor_texcoords, 2 * 4 * obj.vertex_count);
+    zl_obj_free(&obj);
+}
+
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        fprintf(stderr, "usage: test_obj2c BUNNY.obj TETRA.obj\n");
+    if (argc != 3 && argc != 4) {
+        fprintf(stderr, "usage: test_obj2c BUNNY.obj TETRA.obj [FLOOR.obj]\n");
         return 2;
     }
     bunny_path = argv[1];
     tetra_path = argv[2];
+    floor_path = argc == 4 ? argv[3] : NULL;
     UNITY_BEGIN();
     RUN_TEST(test_bunny_normalized);
     RUN_TEST(test_bunny_normals);
     RUN_TEST(test_tetra_with_colors);
+    RUN_TEST(test_floor_texcoords);
     RUN_TEST(test_tetra_without_colors);
     return UNITY_END();
 }
