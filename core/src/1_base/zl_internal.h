@@ -222,6 +222,23 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out);
 unsigned zl_outcode(const zl_source *s, const zl_cvert *v);
 /* Project and snap an inside vertex to window space. */
 void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out);
+/*
+ * A draw's transform to window space with the per-draw work done once
+ * (2_geometry/zl_vertex.c): zl_vx_prepare fills it (0 when a matrix entry
+ * is outside +-16384.0), then zl_vx_vertex(s, vx, idx, out) sets *out
+ * to exactly zl_cache_vertex(s, idx).
+ */
+typedef struct {
+    zl_fixed m[16];      /* the matrix (a copy: no reloads after each store); every entry within +-COORD_LIMIT */
+    int64_t bias[4];     /* translation column * 2^16 + 2^15: rounding folded in */
+    uint32_t wd, ht;     /* viewport */
+    uint32_t gx, gy;     /* W + 2G, H + 2G: the guard-band planes */
+    uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
+    uint32_t pfast;      /* P: positions within [-P, P) need no range checks */
+    uint32_t qx, qy;     /* window quotients below these are inside and in range */
+} zl_vx;
+int zl_vx_prepare(const zl_source *s, zl_vx *vx);
+void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_vertex *out);
 /* Project one mesh vertex into a cache entry (scanline mode). */
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx);
 /* cache[v] = zl_cache_vertex(s, v) for v = first .. first + count - 1 (within
