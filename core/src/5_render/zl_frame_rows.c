@@ -37,7 +37,7 @@ static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source
     if (!zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
         return 0;
     poly->n = 0; /* flat: no vertex colours for the lighting to scale */
-    zl_tri_shade(s, t, poly);
+    zl_tri_shade_lit(s, t, poly, m->lq);
     a->rgb[0] = poly->flat.r;
     a->rgb[1] = poly->flat.g;
     a->rgb[2] = poly->flat.b;
@@ -181,7 +181,7 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
         return;
     if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
         return;
-    zl_tri_shade(&s, t, &poly);
+    zl_tri_shade_lit(&s, t, &poly, m->lq);
     n = zl_tri_pieces(&s, NULL, t, &poly);
     for (k = 0; k < n; k++) {
         uint16_t slot = f->free_head;
