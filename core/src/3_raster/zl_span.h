@@ -61,6 +61,28 @@ static ZL_ALWAYS_INLINE uint32_t depth_of(uint32_t zq)
     return d;
 }
 
+/*
+ * The short RGB565 span of the row loops (zl_rows.c's rows_flat_565 and
+ * tiny_rows, zl_frame_rows.c's span_565): n pixels of colour `pixel` at c
+ * and depth at zb, depth z (Q14, rounding half added) stepped by dz, test
+ * `func` (ZL_LESS or ZL_LEQUAL, a constant at each call), depth written:
+ * exactly what zl_span_flat writes. `unclamped` (a constant): the caller
+ * knows z stays below 2^30, where depth_of is the shift alone.
+ */
+static ZL_ALWAYS_INLINE void span565_short(uint16_t *c, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
+                                          uint16_t pixel, unsigned func, int unclamped)
+{
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = unclamped ? z >> 14 : depth_of(z);
+        if (depth_pass(func, d, zb[i])) {
+            zb[i] = (uint16_t)d;
+            c[i] = pixel;
+        }
+        z += dz;
+    }
+}
+
 /* Write one pixel's bytes, keeping the masked-off bits of the old pixel.
  * Byte by byte, so RGB565_BE rows (a byte stream) may have any alignment;
  * the fast span loop below uses 16-bit stores when it can. */

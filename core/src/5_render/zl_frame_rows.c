@@ -234,7 +234,7 @@ static ZL_NOINLINE int64_t plane_wide(const zl_active *a, int32_t x0)
 static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *ss, unsigned func, uint8_t *crow,
                                       uint16_t *zrow, int32_t x0, int32_t x1)
 {
-    int32_t n = x1 - x0, k;
+    int32_t n = x1 - x0;
     int64_t v, w;
     uint32_t z, dz = a->dz14, lo14 = a->zlo >> 2, hi14 = a->zhi >> 2;
     int32_t dx32 = (int32_t)a->z.dx; /* kept only when it is the whole gradient */
@@ -257,14 +257,7 @@ static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *s
     }
     c = (uint16_t *)(void *)crow + x0;
     zb = zrow + x0;
-    for (k = 0; k < n; k++) {
-        uint32_t d = depth_of(z);
-        if (depth_pass(func, d, zb[k])) {
-            zb[k] = (uint16_t)d;
-            c[k] = pixel;
-        }
-        z += dz;
-    }
+    span565_short(c, zb, n, z, dz, pixel, func, 0);
 }
 
 /* zl_tri_row's steps after the span: 0 when the record has no rows left. */
@@ -287,59 +280,17 @@ static ZL_ALWAYS_INLINE int row_step(zl_active *a)
 }
 
 /*
- * render_row_plain() when every mesh is MESH_ROW565 with depth test `func`
- * (then all their span states are the same): the walk with each record's
- * span and steps in line.
+ * The row walk of scanline mode without style records (every record a
+ * filled triangle without texture planes: add_record refuses anything
+ * else). With `uniform` (a constant at each call) every mesh is MESH_ROW565
+ * with depth test `func` (then all their span states are the same) and each
+ * record's span and steps are in line; without it the walk asks each
+ * record's mesh. One definition for render_row_less, render_row_lequal and
+ * render_row_plain. Merged from two copies (issue 13), measured on Cortex-M4
+ * -O2: scanline bunny -468 instructions, fill +480, tris -480, fill_gouraud 0.
  */
-static ZL_ALWAYS_INLINE void rows_565(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
-                                      uint16_t *zrow, unsigned func)
-{
-    uint16_t *link = &f->active_head;
-    zl_active *pool = f->pool;
-    const uint16_t *visible = f->visible;
-    const zl_span_state *ss = &f->meshes[0].span;
-    for (;;) {
-        uint16_t slot = *link;
-        zl_active *a;
-        int32_t x0, x1;
-        if (i < end && (slot == ZL_LIST_END || pool[slot].id > visible[i])) {
-            activate_plain(f, visible[i++], link);
-            continue;
-        }
-        if (slot == ZL_LIST_END)
-            break;
-        a = &pool[slot];
-        if (a->row != y) { /* a later piece of a clipped triangle, not started */
-            link = &a->next;
-            continue;
-        }
-        x0 = a->left.x < 0 ? 0 : a->left.x;
-        x1 = a->right.x > ss->width ? ss->width : a->right.x;
-        if (x0 < x1)
-            span_565(a, ss, func, crow, zrow, x0, x1);
-        if (row_step(a))
-            link = &a->next;
-        else
-            retire(f, link, a, slot);
-    }
-}
-
-static ZL_NOINLINE void render_row_less(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
-                                        uint16_t *zrow)
-{
-    rows_565(f, y, i, end, crow, zrow, ZL_LESS);
-}
-
-static ZL_NOINLINE void render_row_lequal(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
-                                          uint16_t *zrow)
-{
-    rows_565(f, y, i, end, crow, zrow, ZL_LEQUAL);
-}
-
-/* render_row_styled() without style records: every record is a filled
- * triangle without texture planes (add_record refuses anything else). */
-static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
-                                         uint16_t *zrow)
+static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                       uint16_t *zrow, int uniform, unsigned func)
 {
     uint16_t *link = &f->active_head;
     zl_active *pool = f->pool;
@@ -362,11 +313,13 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
             link = &a->next;
             continue;
         }
-        m = &meshes[a->mesh];
-        if (m->flags & MESH_ROW565) {
+        m = uniform ? &meshes[0] : &meshes[a->mesh];
+        if (uniform || (m->flags & MESH_ROW565)) {
             int32_t x0 = a->left.x < 0 ? 0 : a->left.x, x1 = a->right.x > m->span.width ? m->span.width : a->right.x;
             if (x0 < x1) {
-                if (m->span.func == ZL_LESS)
+                if (uniform)
+                    span_565(a, &m->span, func, crow, zrow, x0, x1);
+                else if (m->span.func == ZL_LESS)
                     span_565(a, &m->span, ZL_LESS, crow, zrow, x0, x1);
                 else
                     span_565(a, &m->span, ZL_LEQUAL, crow, zrow, x0, x1);
@@ -380,6 +333,24 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
         else
             retire(f, link, a, slot);
     }
+}
+
+static ZL_NOINLINE void render_row_less(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                        uint16_t *zrow)
+{
+    rows_walk(f, y, i, end, crow, zrow, 1, ZL_LESS);
+}
+
+static ZL_NOINLINE void render_row_lequal(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                          uint16_t *zrow)
+{
+    rows_walk(f, y, i, end, crow, zrow, 1, ZL_LEQUAL);
+}
+
+static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, uint16_t end, uint8_t *crow,
+                                         uint16_t *zrow)
+{
+    rows_walk(f, y, i, end, crow, zrow, 0, 0);
 }
 
 static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
