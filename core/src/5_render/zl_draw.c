@@ -7,6 +7,10 @@
 
 /* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
 typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
+#if ZL_DRAW_CACHE_SLOTS > 0
+/* zl_context.draw_setup holds a zl_vx (8-byte aligned: int64_t). */
+typedef char zl_draw_setup_fits[(sizeof(zl_vx) <= sizeof(((zl_context *)0)->draw_setup)) ? 1 : -1];
+#endif
 
 static int aligned2(const void *p)
 {
@@ -410,9 +414,10 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
     planes = zl_style_needs_planes(&ctx->style);
 #if ZL_DRAW_CACHE_SLOTS > 0
     if (src.cache == NULL && plain_flat(ctx)) {
-        zl_vx vx;
-        if (zl_vx_prepare(&src, &vx)) {
-            draw_small(ctx, &src, &ss, &vx);
+        /* the set-up in the context, not on the stack of the general path */
+        zl_vx *vx = (zl_vx *)(void *)ctx->draw_setup;
+        if (zl_vx_prepare(&src, vx)) {
+            draw_small(ctx, &src, &ss, vx);
             return ZL_OK;
         }
     }
