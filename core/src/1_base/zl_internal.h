@@ -111,6 +111,7 @@ struct zl_active {
     uint16_t next;         /* active-list link (scanline mode) */
     uint8_t kind;          /* ZL_KIND_*: in the tail padding, so the record does not grow */
     uint8_t light;         /* lighting intensity 0..255, for textures (tail padding too) */
+    uint16_t pix565;       /* rgb as a native RGB565 pixel, scanline mode's plain records (tail padding too) */
 };
 
 /*

@@ -26,6 +26,14 @@ static zl_texplanes *tex_of(const zl_frame *f, uint16_t slot)
     return f->tex ? (zl_texplanes *)(void *)(f->tex + (size_t)slot * sizeof(zl_texplanes)) : NULL;
 }
 
+/* A record's flat colour as span_565 writes it (native RGB565), once per
+ * record instead of once per row. */
+static ZL_ALWAYS_INLINE uint16_t pixel565(const zl_active *a)
+{
+    return (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
+                      (unsigned)(a->rgb[2] >> 3));
+}
+
 /* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
  * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
  * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
@@ -42,6 +50,7 @@ static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source
     a->rgb[1] = poly->flat.g;
     a->rgb[2] = poly->flat.b;
     a->light = poly->light;
+    a->pix565 = pixel565(a);
     return 1;
 }
 
@@ -191,6 +200,7 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
         a = &f->pool[slot];
         if (!zl_tri_piece(&s, NULL, t, &poly, k, a, gouraud_of(f, slot), tex_of(f, slot)))
             continue;
+        a->pix565 = pixel565(a);
         f->free_head = a->next;
         a->id = id;
         a->mesh = mi;
@@ -238,8 +248,7 @@ static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *s
     int64_t v, w;
     uint32_t z, dz = a->dz14, lo14 = a->zlo >> 2, hi14 = a->zhi >> 2;
     int32_t dx32 = (int32_t)a->z.dx; /* kept only when it is the whole gradient */
-    uint16_t pixel = (uint16_t)(((unsigned)(a->rgb[0] >> 3) << 11) | ((unsigned)(a->rgb[1] >> 2) << 5) |
-                                (unsigned)(a->rgb[2] >> 3));
+    uint16_t pixel = a->pix565; /* set on activation (activate_plain) */
     uint16_t *c, *zb;
     if (a->z.dx == (int64_t)dx32) /* a 32-bit gradient: one multiply-accumulate */
         v = a->z.row + (int64_t)dx32 * (x0 - a->ax);
