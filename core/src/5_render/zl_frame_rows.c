@@ -34,15 +34,64 @@ static ZL_ALWAYS_INLINE uint16_t pixel565(const zl_active *a)
                       (unsigned)(a->rgb[2] >> 3));
 }
 
+/* An edge of a zl_tiny in a record's zl_edge (ZL_KIND_TINY): N in x, its
+ * change per row in step, the divisor in den. */
+static ZL_ALWAYS_INLINE void tiny_edge_in(zl_edge *e, const zl_tiny_edge *te)
+{
+    e->x = te->n;
+    e->step = te->inc;
+    e->den = te->d;
+    e->rem = 0;
+    e->rstep = 0;
+}
+
+/* A zl_tiny_setup triangle as a ZL_KIND_TINY record (zl_internal.h says
+ * which fields hold what). */
+static ZL_ALWAYS_INLINE void tiny_record(zl_active *a, const zl_tiny *tt)
+{
+    a->kind = ZL_KIND_TINY;
+    tiny_edge_in(&a->left, &tt->lng);
+    if (tt->first < tt->mid) { /* only edges with rows were set up */
+        tiny_edge_in(&a->right, &tt->up);
+        if (tt->mid < tt->end)
+            tiny_edge_in(&a->lower, &tt->low);
+    } else {
+        tiny_edge_in(&a->right, &tt->low);
+    }
+    a->left.rem = (int32_t)tt->zbase; /* below 2^31: (zlo >> 2) + 2^13 */
+    a->z.row = tt->zr;
+    a->z.dy = tt->zdy;
+    a->z.dx = tt->zdx;
+    a->zlo = (uint32_t)tt->zlo;
+    a->zhi = (uint32_t)tt->zhi;
+    a->dz14 = tt->dz14;
+    a->ax = tt->ax;
+    a->row = (int16_t)tt->first;
+    a->mid = (int16_t)tt->mid;
+    a->end = (int16_t)tt->end;
+    a->lower_is_left = (uint8_t)tt->long_left;
+}
+
 /* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
  * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
  * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
- * frame mode's draw_cached does (poly: the caller's scratch polygon).
- * Returns 0 when it has no rows (never). */
+ * frame mode's draw_cached does (poly: the caller's scratch polygon); with
+ * `tiny` (a MESH_ROW565 mesh, render_row_plain's walks) a small one as a
+ * ZL_KIND_TINY record, frame mode's zl_tiny_setup and zl_tiny_draw's rows.
+ * Returns 0 when it has no rows. */
 static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t,
-                                         const zl_cached_vertex *const *c, zl_active *a, zl_poly *poly)
+                                         const zl_cached_vertex *const *c, zl_active *a, zl_poly *poly, int tiny)
 {
-    if (!zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
+    int set = -1;
+    if (tiny) {
+        zl_tiny tt;
+        set = zl_tiny_setup(&tt, c[0], c[1], c[2], s->width, s->height);
+        if (set == 0)
+            return 0;
+        if (set > 0)
+            tiny_record(a, &tt);
+    }
+    if (set < 0 && !zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
         return 0;
     poly->n = 0; /* flat: no vertex colours for the lighting to scale */
     zl_tri_shade_lit(s, t, poly, m->lq);
@@ -59,7 +108,7 @@ static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source
  * 0, having done nothing, when a vertex needs clipping (or is dropped):
  * then the general path takes the triangle. */
 static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_source *s, uint32_t t, uint16_t *link,
-                                            zl_poly *poly)
+                                            zl_poly *poly, int tiny)
 {
     const zl_frame_mesh *m = &f->meshes[mi];
     const uint16_t *idx = m->mesh.indices + t * 3u;
@@ -74,7 +123,7 @@ static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_so
     if (slot == ZL_LIST_END)
         return 1; /* cannot happen: planning bounded the peak */
     a = &f->pool[slot];
-    if (!setup_cached(m, s, t, c, a, poly))
+    if (!setup_cached(m, s, t, c, a, poly, tiny))
         return 1;
     f->free_head = a->next;
     a->id = (uint16_t)(m->tri_base + t);
@@ -99,7 +148,7 @@ static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
     zl_poly *poly = &tpoly.p;
     unsigned k, n = 1;
     source_of(f, m, &s);
-    if (!lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly))
+    if (!lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly, 0))
         return;
     if (!lines) {
         if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
@@ -186,7 +235,7 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
     zl_poly poly;
     unsigned k, n;
     source_of(f, m, &s);
-    if ((m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, &poly))
+    if ((m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, &poly, (m->flags & MESH_ROW565) != 0))
         return;
     if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
         return;
@@ -269,6 +318,30 @@ static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *s
     span565_short(c, zb, n, z, dz, pixel, func, 0);
 }
 
+/* The span of a ZL_KIND_TINY record on its row, columns [x0, x1). */
+static ZL_ALWAYS_INLINE void tiny_row(const zl_active *a, const zl_span_state *ss, unsigned func, int32_t x0, int32_t x1,
+                                      uint8_t *crow, uint16_t *zrow)
+{
+    tiny_fill(ss, func, x0, x1, (uint32_t)a->z.row, (uint32_t)a->z.dx, (int32_t)a->zlo, (int32_t)a->zhi,
+              (uint32_t)a->left.rem, a->dz14, a->ax, (uint16_t *)(void *)crow, zrow, a->pix565);
+}
+
+/* zl_tiny_draw's steps after a row of a ZL_KIND_TINY record: 0 when it has
+ * no rows left. The plane's row value wraps modulo 2^32 (tiny_depth). */
+static ZL_ALWAYS_INLINE int tiny_step(zl_active *a)
+{
+    int32_t row = a->row + 1;
+    a->left.x += a->left.step;
+    a->right.x += a->right.step;
+    a->z.row = (uint32_t)((uint32_t)a->z.row + (uint32_t)a->z.dy);
+    a->row = (int16_t)row;
+    if (row >= a->end)
+        return 0;
+    if (row == a->mid)
+        a->right = a->lower;
+    return 1;
+}
+
 /* zl_tri_row's steps after the span: 0 when the record has no rows left. */
 static ZL_ALWAYS_INLINE int row_step(zl_active *a)
 {
@@ -323,7 +396,19 @@ static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint
             continue;
         }
         m = uniform ? &meshes[0] : &meshes[a->mesh];
-        if (uniform || (m->flags & MESH_ROW565)) {
+        if (a->kind == ZL_KIND_TINY) { /* only in MESH_ROW565 meshes */
+            int32_t x0, x1;
+            tiny_cols(a->left.x, a->left.den, a->right.x, a->right.den, a->lower_is_left, m->span.width, &x0, &x1);
+            if (x0 < x1) {
+                if (uniform)
+                    tiny_row(a, &m->span, func, x0, x1, crow, zrow);
+                else if (m->span.func == ZL_LESS)
+                    tiny_row(a, &m->span, ZL_LESS, x0, x1, crow, zrow);
+                else
+                    tiny_row(a, &m->span, ZL_LEQUAL, x0, x1, crow, zrow);
+            }
+            more = tiny_step(a);
+        } else if (uniform || (m->flags & MESH_ROW565)) {
             int32_t x0 = a->left.x < 0 ? 0 : a->left.x, x1 = a->right.x > m->span.width ? m->span.width : a->right.x;
             if (x0 < x1) {
                 if (uniform)
