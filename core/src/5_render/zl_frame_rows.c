@@ -35,14 +35,12 @@ static ZL_ALWAYS_INLINE uint16_t pixel565(const zl_active *a)
 }
 
 /* An edge of a zl_tiny in a record's zl_edge (ZL_KIND_TINY): N in x, its
- * change per row in step, the divisor in den. */
+ * change per row in step, the divisor in den (rem and rstep unused). */
 static ZL_ALWAYS_INLINE void tiny_edge_in(zl_edge *e, const zl_tiny_edge *te)
 {
     e->x = te->n;
     e->step = te->inc;
     e->den = te->d;
-    e->rem = 0;
-    e->rstep = 0;
 }
 
 /* A zl_tiny_setup triangle as a ZL_KIND_TINY record (zl_internal.h says
@@ -77,8 +75,9 @@ static ZL_ALWAYS_INLINE void tiny_record(zl_active *a, const zl_tiny *tt)
  * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
  * frame mode's draw_cached does (poly: the caller's scratch polygon); with
  * `tiny` (a MESH_ROW565 mesh, render_row_plain's walks) a small one as a
- * ZL_KIND_TINY record, frame mode's zl_tiny_setup and zl_tiny_draw's rows.
- * Returns 0 when it has no rows. */
+ * ZL_KIND_TINY record, frame mode's zl_tiny_setup and zl_tiny_draw's rows,
+ * and only the packed pixel is set (zl_tri_pixel565_lit), the colour the
+ * RGB565 walks read. Returns 0 when it has no rows. */
 static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source *s, uint32_t t,
                                          const zl_cached_vertex *const *c, zl_active *a, zl_poly *poly, int tiny)
 {
@@ -93,6 +92,10 @@ static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source
     }
     if (set < 0 && !zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
         return 0;
+    if (tiny) { /* an RGB565 walk reads the packed pixel alone */
+        a->pix565 = zl_tri_pixel565_lit(s, t, m->lq);
+        return 1;
+    }
     poly->n = 0; /* flat: no vertex colours for the lighting to scale */
     zl_tri_shade_lit(s, t, poly, m->lq);
     a->rgb[0] = poly->flat.r;
