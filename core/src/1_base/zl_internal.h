@@ -329,6 +329,9 @@ typedef struct {
  * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height);
+/* zl_tiny_setup into a scanline record of kind ZL_KIND_TINY (same returns). */
+int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                         uint16_t width, uint16_t height);
 /* Whether zl_tiny_draw can write this target: RGB565, aligned rows, every
  * channel, depth LESS or LEQUAL with writes. */
 int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth);

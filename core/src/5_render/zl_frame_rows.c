@@ -34,42 +34,6 @@ static ZL_ALWAYS_INLINE uint16_t pixel565(const zl_active *a)
                       (unsigned)(a->rgb[2] >> 3));
 }
 
-/* An edge of a zl_tiny in a record's zl_edge (ZL_KIND_TINY): N in x, its
- * change per row in step, the divisor in den (rem and rstep unused). */
-static ZL_ALWAYS_INLINE void tiny_edge_in(zl_edge *e, const zl_tiny_edge *te)
-{
-    e->x = te->n;
-    e->step = te->inc;
-    e->den = te->d;
-}
-
-/* A zl_tiny_setup triangle as a ZL_KIND_TINY record (zl_internal.h says
- * which fields hold what). */
-static ZL_ALWAYS_INLINE void tiny_record(zl_active *a, const zl_tiny *tt)
-{
-    a->kind = ZL_KIND_TINY;
-    tiny_edge_in(&a->left, &tt->lng);
-    if (tt->first < tt->mid) { /* only edges with rows were set up */
-        tiny_edge_in(&a->right, &tt->up);
-        if (tt->mid < tt->end)
-            tiny_edge_in(&a->lower, &tt->low);
-    } else {
-        tiny_edge_in(&a->right, &tt->low);
-    }
-    a->left.rem = (int32_t)tt->zbase; /* below 2^31: (zlo >> 2) + 2^13 */
-    a->z.row = tt->zr;
-    a->z.dy = tt->zdy;
-    a->z.dx = tt->zdx;
-    a->zlo = (uint32_t)tt->zlo;
-    a->zhi = (uint32_t)tt->zhi;
-    a->dz14 = tt->dz14;
-    a->ax = tt->ax;
-    a->row = (int16_t)tt->first;
-    a->mid = (int16_t)tt->mid;
-    a->end = (int16_t)tt->end;
-    a->lower_is_left = (uint8_t)tt->long_left;
-}
-
 /* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
  * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
  * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
@@ -83,12 +47,9 @@ static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source
 {
     int set = -1;
     if (tiny) {
-        zl_tiny tt;
-        set = zl_tiny_setup(&tt, c[0], c[1], c[2], s->width, s->height);
+        set = zl_tiny_setup_record(a, c[0], c[1], c[2], s->width, s->height);
         if (set == 0)
             return 0;
-        if (set > 0)
-            tiny_record(a, &tt);
     }
     if (set < 0 && !zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
         return 0;
