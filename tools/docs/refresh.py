@@ -10,7 +10,7 @@ plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
   * replaces the table after a line "<!-- measured: title -->" the same way;
-  * replaces the instruction column of the README's visibility table (rows mapped below).
+  * replaces the instruction and RAM columns of the README's visibility table (rows mapped below).
 Nothing else in a document changes; prose that quotes a figure must be edited by hand
 (grep for the old value). Prints what it replaced.
 
@@ -165,7 +165,9 @@ def refresh(doc, secs, vis, check=False):
     for n, line in enumerate(lines):
         cells = [c.strip() for c in line.split("|")]
         if doc == "README.md" and len(cells) > 4 and cells[1] in VIS_ROWS and vis.get(VIS_ROWS[cells[1]]):
-            cells[3] = vis[VIS_ROWS[cells[1]]]
+            cells[3] = vis[VIS_ROWS[cells[1]]][0]
+            if vis[VIS_ROWS[cells[1]]][1]:
+                cells[2] = vis[VIS_ROWS[cells[1]]][1]
             lines[n] = "| " + " | ".join(cells[1:-1]) + " |"
     if check:
         return drift(original, lines, doc)
@@ -197,7 +199,7 @@ def main():
     vis = {}
     for row in secs.get("Visibility methods on Cortex-M4 (bunny, -O2)", [])[2:]:
         cells = [c.strip() for c in row.split("|")]
-        vis[cells[1]] = cells[2]
+        vis[cells[1]] = (cells[2], cells[3] if len(cells) > 4 else "")
     if check:
         bad = refresh("README.md", secs, vis, check=True)
         for b in bad:

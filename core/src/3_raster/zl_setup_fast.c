@@ -2,9 +2,10 @@
  * Stage 3, raster: the 32-bit set-ups of the common case. A flat triangle
  * whose vertices are in the vertex cache (int16 window coordinates) is set up
  * in 32-bit products with one reciprocal of the area (zl_tri_setup_flat), and
- * a small one gets the compact record of zl_tiny_draw (zl_tiny_setup). Both
- * give the same numbers as zl_tri_setup (zl_setup.c) and return "use the
- * general set-up" outside their ranges.
+ * a small one gets the compact record of zl_tiny_draw (zl_tiny_setup), or
+ * in scanline mode the same numbers in a ZL_KIND_TINY pool record
+ * (zl_tiny_setup_record). They give the same numbers as zl_tri_setup
+ * (zl_setup.c) and return "use the general set-up" outside their ranges.
  */
 #include <string.h>
 
