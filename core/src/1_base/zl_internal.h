@@ -133,9 +133,11 @@ struct zl_active {
 #define ZL_KIND_LINE_AA 3 /* as a line; left is the floor of the minor coordinate, rem its fraction */
 /* A small flat triangle of scanline mode (zl_tiny_setup, RGB565 meshes of
  * render_row_plain's walks): left, right and lower hold the long, current
- * short and lower short zl_tiny_edge (n in x, inc in step, d in den); left.rem
- * is zbase; z.row, z.dy, z.dx the 32-bit plane (zr, zdy, zdx); zlo, zhi,
- * dz14, ax, row (first), mid, end as zl_tiny's; lower_is_left is long_left. */
+ * short and lower short zl_tiny_edge (n in x, inc in step, d in den; at row
+ * mid those three of lower go to right); the 32-bit plane, as int32 bits:
+ * left.rem zbase, left.rstep zdx, right.rem zr (this row), right.rstep zdy;
+ * zlo, zhi, dz14, ax, row (first), mid, end as zl_tiny's; lower_is_left is
+ * long_left. z is not used. */
 #define ZL_KIND_TINY 4
 
 /* How the spans of one draw write their pixels. */

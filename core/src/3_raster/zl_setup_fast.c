@@ -294,10 +294,13 @@ int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cache
     } else {
         tiny_edge_in(&r->right, &tt.low);
     }
+    /* the 32-bit plane in the unused DDA fields: the row value steps with the
+     * short edge (right), so it is kept apart from lower (see ZL_KIND_TINY);
+     * the values are modulo 2^32 (tiny_depth), their bits kept as int32 */
     r->left.rem = (int32_t)tt.zbase; /* below 2^31: (zlo >> 2) + 2^13 */
-    r->z.row = tt.zr;
-    r->z.dy = tt.zdy;
-    r->z.dx = tt.zdx;
+    r->left.rstep = (int32_t)tt.zdx;
+    r->right.rem = (int32_t)tt.zr;
+    r->right.rstep = (int32_t)tt.zdy;
     r->zlo = (uint32_t)tt.zlo;
     r->zhi = (uint32_t)tt.zhi;
     r->dz14 = tt.dz14;

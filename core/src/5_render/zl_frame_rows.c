@@ -286,23 +286,27 @@ static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *s
 static ZL_ALWAYS_INLINE void tiny_row(const zl_active *a, const zl_span_state *ss, unsigned func, int32_t x0, int32_t x1,
                                       uint8_t *crow, uint16_t *zrow)
 {
-    tiny_fill(ss, func, x0, x1, (uint32_t)a->z.row, (uint32_t)a->z.dx, (int32_t)a->zlo, (int32_t)a->zhi,
+    tiny_fill(ss, func, x0, x1, (uint32_t)a->right.rem, (uint32_t)a->left.rstep, (int32_t)a->zlo, (int32_t)a->zhi,
               (uint32_t)a->left.rem, a->dz14, a->ax, (uint16_t *)(void *)crow, zrow, a->pix565);
 }
 
 /* zl_tiny_draw's steps after a row of a ZL_KIND_TINY record: 0 when it has
- * no rows left. The plane's row value wraps modulo 2^32 (tiny_depth). */
+ * no rows left. The plane's row value wraps modulo 2^32 (tiny_depth): its
+ * bits are added as uint32. */
 static ZL_ALWAYS_INLINE int tiny_step(zl_active *a)
 {
     int32_t row = a->row + 1;
     a->left.x += a->left.step;
     a->right.x += a->right.step;
-    a->z.row = (uint32_t)((uint32_t)a->z.row + (uint32_t)a->z.dy);
+    a->right.rem = (int32_t)((uint32_t)a->right.rem + (uint32_t)a->right.rstep);
     a->row = (int16_t)row;
     if (row >= a->end)
         return 0;
-    if (row == a->mid)
-        a->right = a->lower;
+    if (row == a->mid) { /* the plane in right.rem and rstep stays */
+        a->right.x = a->lower.x;
+        a->right.step = a->lower.step;
+        a->right.den = a->lower.den;
+    }
     return 1;
 }
 
