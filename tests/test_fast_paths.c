@@ -14,6 +14,16 @@
  * beyond 512 pixels (the 32-bit bounds), triangles across the target's
  * edges, and the four combinations of LESS / LEQUAL with back-face culling
  * on and off.
+ *
+ * Without a caller cache, zl_draw_mesh keeps recent window vertices in its
+ * own direct-mapped cache (ZL_DRAW_CACHE_SLOTS, zl_context.draw_cache) and
+ * takes the same fast path. test_shared_vertices draws a mesh whose
+ * triangles share vertices, more vertices than slots and triangles whose
+ * vertices fight for one slot, through a matrix, some vertices beyond the
+ * near and far planes (the clipping path): with the caller's cache and
+ * without it. This file is also built against a library with
+ * ZL_DRAW_CACHE_SLOTS=0 (test_fast_paths_general): there the draw without
+ * a cache is the general path, so both checks compare fast against general.
  */
 #include <string.h>
 
@@ -146,9 +156,105 @@ static void test_cached_small_triangles_equal_the_general_path(void)
     TEST_ASSERT_GREATER_THAN(64L * W * H / 4, written);
 }
 
+enum { GW = 64, GH = 41, NP = GW * GH, NS = 1500 }; /* NP > 1024 slots */
+
+static zl_fixed gpos[NP * 3];
+static uint16_t gidx[NS * 3];
+static uint8_t gcol[NS * 3];
+static uint32_t gcache[NP * 2]; /* ZL_VERTEX_CACHE_BYTES(NP) */
+
+static void draw_shared(uint16_t *color, uint16_t *depth, int cached, const zl_state *st, const zl_mesh *m,
+                        const zl_mat4 *mvp)
+{
+    zl_target tg;
+    zl_context ctx;
+    zl_rgb bg = {1, 2, 3};
+    memset(&tg, 0, sizeof tg);
+    tg.color = color;
+    tg.color_stride = W * 2;
+    tg.depth = depth;
+    tg.depth_stride = W * 2;
+    tg.width = W;
+    tg.height = H;
+    tg.format = ZL_FORMAT_RGB565;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
+    ctx.state = *st;
+    if (cached) {
+        ctx.vertex_cache = gcache;
+        ctx.vertex_cache_bytes = sizeof gcache;
+    }
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp)); /* again: the cache starts empty each draw */
+}
+
+static void test_shared_vertices(void)
+{
+    zl_mesh m;
+    zl_mat4 mvp;
+    long written = 0;
+    int scene, i, j, t;
+    memset(&m, 0, sizeof m);
+    memset(&mvp, 0, sizeof mvp);
+    /* clip space = object space, w = 1: x, y in [-1.25, 1.25] (the guard
+     * band beyond the window), z in [-0.06, 1.06] (some vertices clipped) */
+    mvp.m[0] = mvp.m[5] = mvp.m[10] = mvp.m[15] = ZL_FX_ONE;
+    m.positions = gpos;
+    m.indices = gidx;
+    m.face_colors = gcol;
+    m.vertex_count = NP;
+    m.triangle_count = NS;
+    for (scene = 0; scene < 16; scene++) {
+        zl_state st;
+        zl_state_default(&st);
+        st.depth_func = (scene & 1) ? ZL_LEQUAL : ZL_LESS;
+        st.cull = (scene & 2) ? ZL_CULL_BACK : ZL_CULL_NONE;
+        st.light_on = (uint8_t)((scene >> 2) & 1);
+        for (j = 0; j < GH; j++)
+            for (i = 0; i < GW; i++) {
+                zl_fixed *p = &gpos[(j * GW + i) * 3];
+                p[0] = (i - GW / 2) * (ZL_FX_ONE * 5 / 2 / GW) + rand_range(-600, 600);
+                p[1] = (j - GH / 2) * (ZL_FX_ONE * 5 / 2 / GH) + rand_range(-600, 600);
+                p[2] = (scene & 8) ? rand_range(-ZL_FX_ONE / 16, ZL_FX_ONE + ZL_FX_ONE / 16)
+                                   : rand_range(ZL_FX_ONE / 4, ZL_FX_ONE / 2);
+            }
+        for (t = 0; t < NS; t++) {
+            uint16_t *ix = &gidx[t * 3];
+            int kind = rand_range(0, 7);
+            i = rand_range(0, GW - 2);
+            j = rand_range(0, GH - 2);
+            ix[0] = (uint16_t)(j * GW + i);
+            ix[1] = (uint16_t)(j * GW + i + 1 + (kind & 1) * GW);
+            ix[2] = (uint16_t)((j + 1) * GW + i);
+            if (kind == 0) { /* three vertices 1024 apart: one slot of the small cache */
+                int v = rand_range(0, NP - 2049);
+                ix[0] = (uint16_t)v;
+                ix[1] = (uint16_t)(v + 1024);
+                ix[2] = (uint16_t)(v + 2048);
+            }
+            if (kind == 2) { /* the other winding */
+                uint16_t tmp = ix[1];
+                ix[1] = ix[2];
+                ix[2] = tmp;
+            }
+            gcol[t * 3] = (uint8_t)next_rand();
+            gcol[t * 3 + 1] = (uint8_t)next_rand();
+            gcol[t * 3 + 2] = (uint8_t)next_rand();
+        }
+        draw_shared(color_a, depth_a, 1, &st, &m, &mvp);
+        draw_shared(color_b, depth_b, 0, &st, &m, &mvp);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_a, depth_b, sizeof depth_a, "depth differs without the caller cache");
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_a, color_b, sizeof color_a, "colour differs without the caller cache");
+        for (i = 0; i < W * H; i++)
+            written += depth_a[i] != 65535;
+    }
+    TEST_ASSERT_GREATER_THAN(16L * W * H / 4, written);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_cached_small_triangles_equal_the_general_path);
+    RUN_TEST(test_shared_vertices);
     return UNITY_END();
 }

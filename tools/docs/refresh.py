@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
 
-    python3 tools/docs/refresh.py [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
+    python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
                                   [--riscv BUILD_DIR] [--riscv-only]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
@@ -13,9 +13,16 @@ plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
   * replaces the table after a line "<!-- measured: title -->" the same way;
-  * replaces the instruction column of the README's visibility table (rows mapped below).
+  * replaces the instruction and RAM columns of the README's visibility table (rows mapped below).
 Nothing else in a document changes; prose that quotes a figure must be edited by hand
 (grep for the old value). Prints what it replaced.
+
+With --check nothing is written: every figure of README.md's measured tables is compared
+with the fresh measurement, and the exit status is 1 when one drifted: an instruction
+count (any other number) by more than 0.5 % (a ratio printed with decimals may also
+differ by one unit of its last digit, its rounding), a byte count (a column whose
+heading names bytes, RAM, flash or stack) at all. CTest runs it in the Cortex-M4 build
+(docs_measured_tables), so README cannot drift from the code.
 """
 import os
 import re
@@ -93,9 +100,57 @@ def replace_table(lines, start, table, through_notes=False):
     return lines[:i] + table + lines[j:]
 
 
-def refresh(doc, secs, vis):
+def number(cell):
+    """The value of a table cell holding a number (commas, bold, % allowed), else None;
+    with the count of decimals printed."""
+    c = cell.replace("**", "").replace(",", "").replace("%", "").strip()
+    if not re.fullmatch(r"-?\d+(\.\d+)?", c):
+        return None
+    return float(c), (len(c.split(".")[1]) if "." in c else 0)
+
+
+def drift(old_lines, new_lines, doc):
+    """Figures of the measured tables that drifted (see --check); [] when none."""
+    bad = []
+    if len(old_lines) != len(new_lines):
+        return [f"{doc}: the tables changed shape ({len(old_lines)} lines, fresh {len(new_lines)})"]
+    header = []
+    for old, new in zip(old_lines, new_lines):
+        if not old.startswith("|"):
+            header = []
+            continue
+        cells_o = [c.strip() for c in old.split("|")]
+        if not header:
+            header = cells_o
+            continue
+        if old == new:
+            continue
+        cells_n = [c.strip() for c in new.split("|")]
+        if len(cells_o) != len(cells_n):
+            bad.append(f"{doc}: row changed shape: {old!r} -> {new!r}")
+            continue
+        for k, (a, b) in enumerate(zip(cells_o, cells_n)):
+            if a == b:
+                continue
+            col = header[k] if k < len(header) else ""
+            na, nb = number(a), number(b)
+            if na is None or nb is None:
+                bad.append(f"{doc}: {cells_o[1]} / {col}: {a} -> {b}")
+                continue
+            (va, da), (vb, _) = na, nb
+            exact = re.search(r"\b(bytes|RAM|flash|stack)\b", col, re.I) is not None
+            rel = abs(vb - va) / max(abs(va), 1e-9)
+            ok = not exact and (rel <= 0.005 or (da > 0 and abs(vb - va) <= 10 ** -da + 1e-9))
+            if not ok:
+                bad.append(f"{doc}: {cells_o[1]} / {col}: README {a}, measured {b}" +
+                           ("" if exact else f" ({100 * rel:+.2f} %)"))
+    return bad
+
+
+def refresh(doc, secs, vis, check=False):
     path = os.path.join(ROOT, doc)
     lines = open(path).read().split("\n")
+    original = list(lines)
     done = []
     i = 0
     while i < len(lines):
@@ -113,8 +168,12 @@ def refresh(doc, secs, vis):
     for n, line in enumerate(lines):
         cells = [c.strip() for c in line.split("|")]
         if doc == "README.md" and len(cells) > 4 and cells[1] in VIS_ROWS and vis.get(VIS_ROWS[cells[1]]):
-            cells[3] = vis[VIS_ROWS[cells[1]]]
+            cells[3] = vis[VIS_ROWS[cells[1]]][0]
+            if vis[VIS_ROWS[cells[1]]][1]:
+                cells[2] = vis[VIS_ROWS[cells[1]]][1]
             lines[n] = "| " + " | ".join(cells[1:-1]) + " |"
+    if check:
+        return drift(original, lines, doc)
     open(path, "w").write("\n".join(lines))
     print(f"{doc}: {len(done)} tables: " + "; ".join(done))
 
@@ -122,6 +181,9 @@ def refresh(doc, secs, vis):
 def main():
     build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
     args = sys.argv[1:]
+    check = False
+    if args and args[0] == "--check":
+        check, args = True, args[1:]
     while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only"):
         if args[0] == "--riscv-only":
             cortex_m, riscv = False, riscv or "build/rv32imac-bench"
@@ -153,7 +215,14 @@ def main():
     vis = {}
     for row in secs.get("Visibility methods on Cortex-M4 (bunny, -O2)", [])[2:]:
         cells = [c.strip() for c in row.split("|")]
-        vis[cells[1]] = cells[2]
+        vis[cells[1]] = (cells[2], cells[3] if len(cells) > 4 else "")
+    if check:
+        bad = refresh("README.md", secs, vis, check=True)
+        for b in bad:
+            print("DRIFT " + b)
+        print(f"README.md: {len(bad)} figures drifted from the measurement" if bad else
+              "README.md: every measured figure within its tolerance")
+        sys.exit(1 if bad else 0)
     for doc in DOCS:
         refresh(doc, secs, vis)
 

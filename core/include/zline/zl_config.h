@@ -46,6 +46,27 @@
 #endif
 
 /*
+ * ZL_DRAW_CACHE_SLOTS: entries of zl_draw_mesh's own post-transform vertex
+ * cache, used when the caller gives no vertex cache (zl_context.vertex_cache
+ * NULL or too small). Direct-mapped by vertex index; each entry costs 10
+ * bytes of zl_context (an 8-byte window vertex and a 2-byte tag), plus 136
+ * bytes for the draw's transform set-up: the default 1024 is 10376 bytes
+ * (zl_context is frame mode's, next to a full colour and depth target). A
+ * power of two from 2 to 32768, or 0 for no cache (then each triangle
+ * transforms and clips its own three vertices: slower, the same pixels). Measured on the bunny (README, Cortex-M4):
+ * smaller caches miss more often, each miss is one vertex transform.
+ * zl_context's layout depends on it: the library and its callers must be
+ * built with the same value.
+ */
+#ifndef ZL_DRAW_CACHE_SLOTS
+#define ZL_DRAW_CACHE_SLOTS 1024
+#endif
+#if ZL_DRAW_CACHE_SLOTS != 0 && \
+    (ZL_DRAW_CACHE_SLOTS < 2 || ZL_DRAW_CACHE_SLOTS > 32768 || (ZL_DRAW_CACHE_SLOTS & (ZL_DRAW_CACHE_SLOTS - 1)) != 0)
+#error "ZL_DRAW_CACHE_SLOTS must be 0 or a power of two from 2 to 32768"
+#endif
+
+/*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library
  * validates every argument itself and returns an error); define it to your
  * platform's assert to catch bugs in zline during development.

@@ -111,6 +111,7 @@ struct zl_active {
     uint16_t next;         /* active-list link (scanline mode) */
     uint8_t kind;          /* ZL_KIND_*: in the tail padding, so the record does not grow */
     uint8_t light;         /* lighting intensity 0..255, for textures (tail padding too) */
+    uint16_t pix565;       /* rgb as a native RGB565 pixel, scanline mode's plain records (tail padding too) */
 };
 
 /*
@@ -130,6 +131,14 @@ struct zl_active {
 #define ZL_KIND_LINE 1
 #define ZL_KIND_POINT 2
 #define ZL_KIND_LINE_AA 3 /* as a line; left is the floor of the minor coordinate, rem its fraction */
+/* A small flat triangle of scanline mode (zl_tiny_setup, RGB565 meshes of
+ * render_row_plain's walks): left, right and lower hold the long, current
+ * short and lower short zl_tiny_edge (n in x, inc in step, d in den; at row
+ * mid those three of lower go to right); the 32-bit plane, as int32 bits:
+ * left.rem zbase, left.rstep zdx, right.rem zr (this row), right.rstep zdy;
+ * zlo, zhi, dz14, ax, row (first), mid, end as zl_tiny's; lower_is_left is
+ * long_left. z is not used. */
+#define ZL_KIND_TINY 4
 
 /* How the spans of one draw write their pixels. */
 typedef struct {
@@ -222,6 +231,23 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out);
 unsigned zl_outcode(const zl_source *s, const zl_cvert *v);
 /* Project and snap an inside vertex to window space. */
 void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out);
+/*
+ * A draw's transform to window space with the per-draw work done once
+ * (2_geometry/zl_vertex.c): zl_vx_prepare fills it (0 when a matrix entry
+ * is outside +-16384.0), then zl_vx_vertex(s, vx, idx, out) sets *out
+ * to exactly zl_cache_vertex(s, idx).
+ */
+typedef struct {
+    zl_fixed m[16];      /* the matrix (a copy: no reloads after each store); every entry within +-COORD_LIMIT */
+    int64_t bias[4];     /* translation column * 2^16 + 2^15: rounding folded in */
+    uint32_t wd, ht;     /* viewport */
+    uint32_t gx, gy;     /* W + 2G, H + 2G: the guard-band planes */
+    uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
+    uint32_t pfast;      /* P: positions within [-P, P) need no range checks */
+    uint32_t qx, qy;     /* window quotients below these are inside and in range */
+} zl_vx;
+int zl_vx_prepare(const zl_source *s, zl_vx *vx);
+void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_vertex *out);
 /* Project one mesh vertex into a cache entry (scanline mode). */
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx);
 /* cache[v] = zl_cache_vertex(s, v) for v = first .. first + count - 1 (within
@@ -305,6 +331,9 @@ typedef struct {
  * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height);
+/* zl_tiny_setup into a scanline record of kind ZL_KIND_TINY (same returns). */
+int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                         uint16_t width, uint16_t height);
 /* Whether zl_tiny_draw can write this target: RGB565, aligned rows, every
  * channel, depth LESS or LEQUAL with writes. */
 int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth);

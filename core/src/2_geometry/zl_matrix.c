@@ -1,6 +1,7 @@
 /* Stage 2, geometry: 4x4 matrices in Q16.16 (building, multiplying and
  * applying them) and the transform limits of a mesh (zl_check_geometry). */
 #include "../1_base/zl_internal.h"
+#include "zl_geometry.h"
 
 #define M(r, c) m[(r) * 4 + (c)]
 #define ZL_COORD_LIMIT ((int32_t)1 << 30) /* +-16384.0: keeps 4 products inside int64 */
@@ -265,6 +266,23 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
     if (positions == NULL)
         return ZL_OK;
     n = vertex_count * 3u;
+    /* The OR of the |coordinates| per axis is at least their largest and
+     * below twice it: when all three ORs are below the limit, every
+     * coordinate is in range and the ORs serve as the bound (a looser one:
+     * at worst the exact pass below runs). Else the precise pass. */
+    {
+        uint32_t o[3] = {0, 0, 0};
+        for (i = 0; i < n; i += 3) {
+            o[0] |= abs32(positions[i]);
+            o[1] |= abs32(positions[i + 1]);
+            o[2] |= abs32(positions[i + 2]);
+        }
+        if ((o[0] | o[1] | o[2]) < (uint32_t)ZL_COORD_LIMIT) {
+            for (k = 0; k < 3; k++)
+                big[k] = o[k];
+            n = 0; /* no precise pass */
+        }
+    }
     for (i = 0; i < n; i += 3) {
         for (k = 0; k < 3; k++) {
             zl_fixed v = positions[i + (uint32_t)k];
@@ -285,6 +303,7 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
         if (zl_floor_shift64(bound + 32768, 16) > INT32_MAX)
             exact = 1;
     }
+    n = vertex_count * 3u;
     for (i = 0; exact && i < n; i += 3) {
         zl_vec3 v;
         zl_vec4 c;

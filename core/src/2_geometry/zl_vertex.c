@@ -149,19 +149,8 @@ static zl_cached_vertex cache_vertex_generic(const zl_source *s, uint16_t idx)
     return c;
 }
 
-/*
- * The fast path of the vertex cache, with a matrix: the same numbers as
- * cache_vertex_generic, with the per-draw work hoisted out of the vertex loop.
- */
-typedef struct {
-    zl_fixed m[16];      /* the matrix (a copy: no reloads after each store); every entry within +-COORD_LIMIT */
-    int64_t bias[4];     /* translation column * 2^16 + 2^15: rounding folded in */
-    uint32_t wd, ht;     /* viewport */
-    uint32_t gx, gy;     /* W + 2G, H + 2G: the guard-band planes */
-    uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
-    uint32_t pfast;      /* P: positions within [-P, P) need no range checks */
-    uint32_t qx, qy;     /* window quotients below these are inside and in range */
-} vx_setup;
+/* The fast path of the vertex cache, with a matrix (zl_vx, zl_internal.h). */
+typedef zl_vx vx_setup;
 
 /* min(a, b) where b may be negative (then 0). */
 static uint32_t limit_below(uint32_t a, int32_t b)
@@ -336,6 +325,20 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
     c->y = (int16_t)(y > 0 ? (int32_t)vs->hy - (int32_t)q : (int32_t)(vs->hy + q));
     c->z = depth_q16((uint32_t)z, (uint32_t)w);
     return 1;
+}
+
+int zl_vx_prepare(const zl_source *s, zl_vx *vx)
+{
+    return s->mvp == NULL || vx_prepare(s, vx);
+}
+
+void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_vertex *out)
+{
+    const zl_fixed *p = &s->mesh->positions[idx * 3u];
+    if (s->mvp == NULL)
+        *out = cache_vertex_generic(s, idx);
+    else if (!vx_fast(vx, p, out))
+        *out = vx_cache(vx, p);
 }
 
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)

@@ -198,16 +198,6 @@ ZL_SHARED_STATIC int64_t attr_at(const zl_attr *a, int32_t x, int32_t ax, int64_
     return clamp64(a->row + (int64_t)(x - ax) * a->dx, lo, hi);
 }
 
-/* Spans up to this many pixels are filled in place by the row loops below;
- * longer ones go to zl_span_flat, whose loops pay a set-up to run faster
- * per pixel. */
-#define ZL_SHORT_SPAN 6
-
-/* ceil(n / d), d > 0: C division truncates, which is the ceiling below 0. */
-static ZL_ALWAYS_INLINE int32_t tiny_x(int32_t n, int32_t d)
-{
-    int32_t q = n / d;
-    return q * d < n ? q + 1 : q;
-}
+/* ZL_SHORT_SPAN and tiny_x: zl_span.h (shared with scanline mode's rows). */
 
 #endif /* ZL_RASTER_H */

@@ -2,9 +2,10 @@
  * Stage 3, raster: the 32-bit set-ups of the common case. A flat triangle
  * whose vertices are in the vertex cache (int16 window coordinates) is set up
  * in 32-bit products with one reciprocal of the area (zl_tri_setup_flat), and
- * a small one gets the compact record of zl_tiny_draw (zl_tiny_setup). Both
- * give the same numbers as zl_tri_setup (zl_setup.c) and return "use the
- * general set-up" outside their ranges.
+ * a small one gets the compact record of zl_tiny_draw (zl_tiny_setup), or
+ * in scanline mode the same numbers in a ZL_KIND_TINY pool record
+ * (zl_tiny_setup_record). They give the same numbers as zl_tri_setup
+ * (zl_setup.c) and return "use the general set-up" outside their ranges.
  */
 #include <string.h>
 
@@ -205,8 +206,8 @@ static void tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t zlo, uint32_t zhi
     tt->dz14 = (uint32_t)zl_floor_shift64(z->dx, ZL_ATTR_FRAC - 14);
 }
 
-int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
-                  uint16_t width, uint16_t height)
+static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                       const zl_cached_vertex *c, uint16_t width, uint16_t height)
 {
     const zl_cached_vertex *v[3], *v0, *v1, *v2;
     int32_t first, end, mid, ax, d1, d2, cross;
@@ -255,5 +256,58 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
     tt->mid = mid;
     tt->end = end;
     tt->long_left = cross > 0;
+    return 1;
+}
+
+int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                  uint16_t width, uint16_t height)
+{
+    return tiny_setup(tt, a, b, c, width, height);
+}
+
+/* ---------------------------------------- small flat triangles, scanline mode */
+
+/* An edge of a zl_tiny in a record's zl_edge (ZL_KIND_TINY): N in x, its
+ * change per row in step, the divisor in den (rem and rstep unused). */
+static ZL_ALWAYS_INLINE void tiny_edge_in(zl_edge *e, const zl_tiny_edge *te)
+{
+    e->x = te->n;
+    e->step = te->inc;
+    e->den = te->d;
+}
+
+int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
+                         uint16_t width, uint16_t height)
+{
+    zl_tiny tt; /* in line: its fields go straight to the record */
+    int set;
+    tt.low.n = tt.low.inc = tt.low.d = 0; /* set below when it has rows: GCC cannot tell */
+    set = tiny_setup(&tt, a, b, c, width, height);
+    if (set <= 0)
+        return set;
+    r->kind = ZL_KIND_TINY;
+    tiny_edge_in(&r->left, &tt.lng);
+    if (tt.first < tt.mid) { /* only edges with rows were set up */
+        tiny_edge_in(&r->right, &tt.up);
+        if (tt.mid < tt.end)
+            tiny_edge_in(&r->lower, &tt.low);
+    } else {
+        tiny_edge_in(&r->right, &tt.low);
+    }
+    /* the 32-bit plane in the unused DDA fields: the row value steps with the
+     * short edge (right), so it is kept apart from lower (see ZL_KIND_TINY);
+     * the values are modulo 2^32 (tiny_depth), their bits kept as int32 */
+    r->left.rem = (int32_t)tt.zbase; /* below 2^31: (zlo >> 2) + 2^13 */
+    r->left.rstep = (int32_t)tt.zdx;
+    r->right.rem = (int32_t)tt.zr;
+    r->right.rstep = (int32_t)tt.zdy;
+    r->zlo = (uint32_t)tt.zlo;
+    r->zhi = (uint32_t)tt.zhi;
+    r->dz14 = tt.dz14;
+    r->ax = tt.ax;
+    r->row = (int16_t)tt.first;
+    r->mid = (int16_t)tt.mid;
+    r->end = (int16_t)tt.end;
+    r->lower_is_left = (uint8_t)tt.long_left;
     return 1;
 }

@@ -61,6 +61,93 @@ static ZL_ALWAYS_INLINE uint32_t depth_of(uint32_t zq)
     return d;
 }
 
+/*
+ * The short RGB565 span of the row loops (zl_rows.c's rows_flat_565 and
+ * tiny_rows, zl_frame_rows.c's span_565): n pixels of colour `pixel` at c
+ * and depth at zb, depth z (Q14, rounding half added) stepped by dz, test
+ * `func` (ZL_LESS or ZL_LEQUAL, a constant at each call), depth written:
+ * exactly what zl_span_flat writes. `unclamped` (a constant): the caller
+ * knows z stays below 2^30, where depth_of is the shift alone.
+ */
+static ZL_ALWAYS_INLINE void span565_short(uint16_t *c, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
+                                          uint16_t pixel, unsigned func, int unclamped)
+{
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = unclamped ? z >> 14 : depth_of(z);
+        if (depth_pass(func, d, zb[i])) {
+            zb[i] = (uint16_t)d;
+            c[i] = pixel;
+        }
+        z += dz;
+    }
+}
+
+/* Spans up to this many pixels are filled in place by the row loops;
+ * longer ones go to zl_span_flat, whose loops pay a set-up to run faster
+ * per pixel. */
+#define ZL_SHORT_SPAN 6
+
+void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                  const uint8_t *pix);
+
+/* ceil(n / d), d > 0: C division truncates, which is the ceiling below 0. */
+static ZL_ALWAYS_INLINE int32_t tiny_x(int32_t n, int32_t d)
+{
+    int32_t q = n / d;
+    return q * d < n ? q + 1 : q;
+}
+
+/*
+ * One row of a small triangle (zl_tiny, zl_internal.h), shared by frame
+ * mode's tiny_rows (zl_rows.c) and scanline mode's ZL_KIND_TINY records
+ * (zl_frame_rows.c). tiny_cols: its columns [*x0, *x1), from ceil(nl / dl)
+ * (the long edge) to ceil(ns / ds) (the short one), sides by long_left,
+ * clipped to [0, width). tiny_fill, for x0 < x1: depth from the 32-bit
+ * plane zr (at column ax of this row) stepped by zdx, clamped to [zlo, zhi]
+ * and shifted plus zbase (zl_setup_fast.c's tiny_depth); colour `pixel`
+ * (native RGB565) at crow, depth at zrow, test func (ZL_LESS or ZL_LEQUAL,
+ * a constant) with writes. Two helpers, so a caller loads the plane only
+ * for a row with pixels. zl_rows.c's tiny_rows keeps a copy of this row
+ * body: it says why, with the measured cost of using these.
+ */
+static ZL_ALWAYS_INLINE void tiny_cols(int32_t nl, int32_t dl, int32_t ns, int32_t ds, int long_left, int32_t width,
+                                       int32_t *x0, int32_t *x1)
+{
+    int32_t xa = tiny_x(nl, dl), xb = tiny_x(ns, ds);
+    int32_t a = long_left ? xa : xb, b = long_left ? xb : xa;
+    *x0 = a < 0 ? 0 : a;
+    *x1 = b > width ? width : b;
+}
+
+static ZL_ALWAYS_INLINE void tiny_fill(const zl_span_state *ss, unsigned func, int32_t x0, int32_t x1, uint32_t zr,
+                                       uint32_t zdx, int32_t zlo, int32_t zhi, uint32_t zbase, uint32_t dz14,
+                                       int32_t ax, uint16_t *crow, uint16_t *zrow, uint16_t pixel)
+{
+    uint16_t *cp = crow + x0, *zb = zrow + x0;
+    /* the depth start of depth_start_shifted, in 32 bits (tiny_depth):
+     * wrapping arithmetic, exact because the sum fits */
+    int32_t v = (int32_t)(zr + (uint32_t)(x0 - ax) * zdx);
+    uint32_t zq;
+    int32_t n = x1 - x0;
+    v = v < zlo ? zlo : (v > zhi ? zhi : v);
+    zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + zbase;
+    if (n > ZL_SHORT_SPAN) {
+        uint8_t pix[3] = {0, 0, 0};
+        memcpy(pix, &pixel, 2);
+        zl_span_flat(ss, (uint8_t *)cp, zb, n, zq, dz14, pix);
+    } else {
+        /* No clamp: these pixels are inside the triangle, where the
+         * plane is within the vertex range; the start is within 2^10
+         * (Q20) of it and each of at most ZL_SHORT_SPAN - 1 steps
+         * within one Q14 unit, so zq stays within 32 (Q14) of
+         * [0, 65535 2^14] + 2^13: below 2^30, where depth_of is a
+         * shift. (A gradient step32 clamped cannot have two pixels
+         * inside a triangle.) */
+        span565_short(cp, zb, n, zq, dz14, pixel, func, 1);
+    }
+}
+
 /* Write one pixel's bytes, keeping the masked-off bits of the old pixel.
  * Byte by byte, so RGB565_BE rows (a byte stream) may have any alignment;
  * the fast span loop below uses 16-bit stores when it can. */

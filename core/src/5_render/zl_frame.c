@@ -223,6 +223,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
         m->mvp = *mvp;
     m->state = *state;
     zl_span_state_init(&m->span, state, 1, 1, (zl_format)f->cfg.format, f->cfg.width);
+    zl_light_prepare(state, m->lq);
     m->tri_base = f->triangle_total;
     m->vert_base = f->vertex_count;
     set_ext(f, f->mesh_count, style, lines, omesh, outline);

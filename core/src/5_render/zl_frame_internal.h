@@ -17,6 +17,7 @@ struct zl_frame_mesh {
     uint8_t flags;      /* MESH_*, in bytes that were padding: the layout does not change */
     uint8_t cull_code;  /* culled_area_sign of the state, plus 1 (0, 1 or 2) */
     uint32_t tri_base, vert_base;
+    int32_t lq[3];      /* the state's light, zl_light_prepare'd once (not per triangle) */
 };
 
 #define MESH_MVP 1u       /* mvp holds the transform (else pixel space) */

@@ -5,14 +5,25 @@
 # from TIMER0) and, when the host compiler can build it, the m4timing plugin
 # (a Cortex-M4 cycle ESTIMATE), and prints markdown tables.
 #
-#   port/cortex-m/bench/measure.sh [--update-budgets] [BUILD_DIR]
+#   port/cortex-m/bench/measure.sh [--update-budgets [--allow-raise REASON]] [BUILD_DIR]
 #
 # BUILD_DIR defaults to build/cortex-m4-bench. --update-budgets rewrites
-# budgets.txt from this measurement (+3 %, rounded up to 1000).
+# budgets.txt from this measurement (+3 %, rounded up to 1000), but only
+# LOWERS budgets (and adds lines for new scenes): a budget the measurement
+# would raise is kept, with a warning. --allow-raise REASON raises them too
+# and writes "# raised from OLD: REASON" above each raised line (the
+# budget_raises test fails on a raise without such a line).
 set -eu
 cd "$(dirname "$0")/../../.."
 update=0
-if [ "${1:-}" = --update-budgets ]; then update=1; shift; fi
+raise_reason=
+if [ "${1:-}" = --update-budgets ]; then
+    update=1; shift
+    if [ "${1:-}" = --allow-raise ]; then
+        [ -n "${2:-}" ] || { echo "measure.sh: --allow-raise needs a REASON" >&2; exit 2; }
+        raise_reason=$2; shift 2
+    fi
+fi
 build=${1:-build/cortex-m4-bench}
 bench=$build/port/cortex-m/bench
 out=$build/measure
@@ -63,8 +74,34 @@ qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
 [ $status -eq 0 ] || echo "measure.sh: a benchmark reported a failure (BUDGET FAIL?): see $out/*.txt" >&2
 
 if [ $update -eq 1 ]; then
-    { sed -n '/^#/p' port/cortex-m/bench/budgets.txt
-      cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort; } >"$out/budgets.txt"
+    # The header (leading comment block) stays; each budget line keeps the
+    # comment lines just above it (its raise reasons); lines follow in sort
+    # order. A suggestion above the old budget is a raise: kept out without
+    # --allow-raise, else written with its reason.
+    cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort >"$out/suggest.txt"
+    awk -v reason="$raise_reason" -v suggest="$out/suggest.txt" '
+        BEGIN { header = 1 }
+        /^#/ { if (header) head = head $0 "\n"; else note = note $0 "\n"; next }
+        NF == 3 { header = 0; k = $1 " " $2; old[k] = $3; notes[k] = note; note = ""; keys[k] = 1; next }
+        END {
+            printf "%s", head
+            while ((getline l < suggest) > 0) {
+                split(l, f, " "); k = f[1] " " f[2]; v = f[3]; seen[k] = 1
+                if (k in old && v > old[k] + 0) {
+                    if (reason == "") {
+                        printf "measure.sh: %s would rise %s -> %s: kept (--allow-raise REASON to raise)\n", k, old[k], v > "/dev/stderr"
+                        v = old[k]
+                    } else {
+                        notes[k] = notes[k] "# raised from " old[k] ": " reason "\n"
+                    }
+                }
+                out[k] = notes[k] k " " v
+            }
+            for (k in keys) if (!(k in seen)) out[k] = notes[k] k " " old[k] # not measured here: unchanged
+            n = 0; for (k in out) list[++n] = k
+            for (i = 2; i <= n; i++) { x = list[i]; for (j = i - 1; j >= 1 && list[j] > x; j--) list[j + 1] = list[j]; list[j + 1] = x }
+            for (i = 1; i <= n; i++) print out[list[i]]
+        }' port/cortex-m/bench/budgets.txt >"$out/budgets.txt"
     cp "$out/budgets.txt" port/cortex-m/bench/budgets.txt
     echo "measure.sh: budgets.txt updated" >&2
 fi

@@ -1,0 +1,31 @@
+#!/bin/sh
+# Budget integrity (issue 13): fails when budgets.txt raises a budget above
+# the base branch's without a "# raised from OLD: REASON" line directly above
+# it (what `measure.sh --update-budgets --allow-raise REASON` writes).
+#
+#   port/cortex-m/bench/check-budget-raises.sh [BASE_REF]
+#
+# BASE_REF defaults to $ZLINE_BUDGET_BASE, else main. Exit 77 (CTest: skipped)
+# outside a git checkout or when the ref does not exist.
+set -eu
+cd "$(dirname "$0")/../../.."
+base=${1:-${ZLINE_BUDGET_BASE:-main}}
+f=port/cortex-m/bench/budgets.txt
+tmp=${TMPDIR:-/tmp}/zl-budgets-base.$$
+trap 'rm -f "$tmp"' EXIT
+if ! git rev-parse --verify -q "$base^{commit}" >/dev/null 2>&1 || ! git show "$base:$f" >"$tmp" 2>/dev/null; then
+    echo "check-budget-raises: no $f at git ref $base: skipped"
+    exit 77
+fi
+awk -v base="$base" '
+    NR == FNR { if ($0 !~ /^#/ && NF == 3) old[$1 " " $2] = $3; next }
+    /^#/ { reason = ($0 ~ /^# raised from [0-9]+: [^ ]/); next }
+    NF == 3 {
+        k = $1 " " $2
+        if ((k in old) && $3 + 0 > old[k] + 0) {
+            if (reason) printf "raised with a reason: %s %s -> %s\n", k, old[k], $3
+            else { printf "RAISED WITHOUT A REASON: %s %s -> %s (over %s)\n", k, old[k], $3, base; bad = 1 }
+        }
+        reason = 0
+    }
+    END { if (!bad) print "check-budget-raises: no budget raised without a reason (against " base ")"; exit bad }' "$tmp" "$f"
