@@ -16,9 +16,11 @@
  * as a write past the exactly-sized malloc (AddressSanitizer in the
  * sanitize build); an over-stated one as bytes never touched: at most
  * MAX_UNTOUCHED may stay as painted (alignment padding, record padding,
- * pool records never active at once: 1561 to 1679 bytes on the bunny in
- * every mode, x86-64). Over-stating by 2 bytes a triangle would leave 2936
- * more. Every mode's image is compared with frame mode's, byte for byte.
+ * pool records never active at once, and since scanline mode keeps small
+ * triangles as ZL_KIND_TINY records the unused tail of their pool slots:
+ * 2460 to 2578 bytes on the bunny in every mode, x86-64; the bound was 2048
+ * before the tiny records). Over-stating by 2 bytes a triangle would leave
+ * 2936 more. Every mode's image is compared with frame mode's, byte for byte.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,7 +36,7 @@
 #endif
 
 #define PAINT 0xA5u
-#define MAX_UNTOUCHED 2048u
+#define MAX_UNTOUCHED 3072u
 
 static uint16_t frame_color[BENCH_W * BENCH_H];
 static uint16_t frame_depth[BENCH_W * BENCH_H];
