@@ -5,15 +5,23 @@
 #
 #   port/cortex-m/bench/check-budget-raises.sh [BASE_REF]
 #
-# BASE_REF defaults to $ZLINE_BUDGET_BASE, else main. Exit 77 (CTest: skipped)
-# outside a git checkout or when the ref does not exist.
+# BASE_REF defaults to $ZLINE_BUDGET_BASE, else main; when that ref does not
+# exist (a clone with another branch checked out), origin/main, then HEAD (so a
+# raise not yet committed is still caught). Exit 77 (CTest: skipped) outside a
+# git checkout.
 set -eu
 cd "$(dirname "$0")/../../.."
 base=${1:-${ZLINE_BUDGET_BASE:-main}}
 f=port/cortex-m/bench/budgets.txt
 tmp=${TMPDIR:-/tmp}/zl-budgets-base.$$
 trap 'rm -f "$tmp"' EXIT
-if ! git rev-parse --verify -q "$base^{commit}" >/dev/null 2>&1 || ! git show "$base:$f" >"$tmp" 2>/dev/null; then
+for ref in "$base" "origin/$base" HEAD; do
+    if git rev-parse --verify -q "$ref^{commit}" >/dev/null 2>&1; then
+        base=$ref
+        break
+    fi
+done
+if ! git show "$base:$f" >"$tmp" 2>/dev/null; then
     echo "check-budget-raises: no $f at git ref $base: skipped"
     exit 77
 fi
