@@ -56,7 +56,17 @@ if [ $update -eq 1 ]; then
       echo "#   tag (mode-optimisation) scene budget (instructions per frame, minstret under -icount, exact)"
       echo "# Written by \`port/riscv/bench/measure.sh --update-budgets $arch\` (the measurement + 3 %,"
       echo "# rounded up to 1000)."
-      cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort; } >"$out/budgets.txt"
+      echo "# It only lowers a budget (as port/cortex-m/bench/measure.sh): a suggestion above"
+      echo "# the current budget keeps the current one and is reported; raise by hand, with"
+      echo "# a \"# raised from OLD: REASON\" line above the raised line."
+      cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort |
+          awk -v old="$budgets" 'BEGIN { while ((getline l < old) > 0) { split(l, f, " ");
+                  if (l !~ /^#/ && f[3] != "") cur[f[1] " " f[2]] = f[3] } }
+              { k = $1 " " $2
+                if ((k in cur) && $3 + 0 > cur[k] + 0) {
+                    print "measure.sh: " k ": suggested " $3 " is above the budget " cur[k] ", which stays" > "/dev/stderr"
+                    $3 = cur[k] }
+                print }'; } >"$out/budgets.txt"
     cp "$out/budgets.txt" "$budgets"
     echo "measure.sh: $budgets updated" >&2
 fi
