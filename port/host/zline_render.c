@@ -875,46 +875,88 @@ static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *
     }
 }
 
+/*
+ * Begin a frame in a fresh work buffer of exactly zl_frame_bytes(cfg) bytes
+ * and submit the scene (the mesh, then its outline). *work is the buffer to
+ * free, also on failure (NULL when none was allocated).
+ */
+static zl_status frame_submit(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
+                              const zl_state *state, const zl_frame_config *cfg, zl_frame *frame,
+                              void **work, size_t *bytes)
+{
+    zl_status st;
+    zl_style sty;
+    *work = NULL;
+    *bytes = zl_frame_bytes(cfg);
+    if (*bytes == 0) {
+        error("zl_frame_bytes rejects the frame configuration (%ux%u, %u rows a band, "
+              "max_triangles %lu, max_active %lu)",
+              o->width, o->height, o->band_rows, (unsigned long)cfg->max_triangles,
+              (unsigned long)cfg->max_active);
+        return ZL_ERR_SIZE;
+    }
+    *work = malloc(*bytes); /* exactly what zl_frame_bytes asks, nothing more */
+    if (*work == NULL) {
+        error("out of memory for a %lu-byte work buffer", (unsigned long)*bytes);
+        return ZL_ERR_SIZE;
+    }
+    st = zl_frame_begin(frame, cfg, *work, *bytes, o->bg, (uint16_t)CLEAR_DEPTH);
+    if (st == ZL_OK) {
+        style_of(o, &sty);
+        st = zl_frame_add_mesh_styled(frame, mesh, mvp, state, &sty);
+    }
+    if (st == ZL_OK && o->outline) {
+        zl_outline ol;
+        zl_state ost = *state;
+        outline_of(o, &ol, &ost, &sty);
+        st = zl_frame_add_outlines(frame, mesh, mvp, &ost, &sty, &ol);
+    }
+    if (st != ZL_OK)
+        error("zl_frame setup failed: %s", status_name(st));
+    return st;
+}
+
+/*
+ * Scanline and band mode. The first try sizes the frame for one record per
+ * triangle, enough for most scenes. A clipped triangle can be several pieces
+ * in a row (up to 8), so a scene can need more: the planning of the first
+ * band then fails with ZL_ERR_CAPACITY before any row is drawn or written,
+ * and the frame is sized again from what zl_frame_needs reports and
+ * rendered once more. So these modes render whatever frame mode renders
+ * (below the library's caps of 65535 primitives and 65534 records a row).
+ */
 static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
                         const zl_state *state, output *out)
 {
     zl_frame_config cfg;
     zl_frame frame;
-    size_t bytes;
-    void *work;
-    int r;
-    zl_status st;
-    /* The sum of triangle_count always suffices for both capacities. */
+    size_t bytes = 0;
+    void *work = NULL;
+    int r = 0, attempt;
     frame_config(&cfg, o, mesh, mesh->triangle_count, mesh->triangle_count);
-    bytes = zl_frame_bytes(&cfg);
-    if (bytes == 0) {
-        error("zl_frame_bytes rejects the frame configuration (%ux%u, %u rows a band)", o->width,
-              o->height, o->band_rows);
-        return 0;
-    }
-    work = malloc(bytes); /* exactly what zl_frame_bytes asks, nothing more */
-    if (work == NULL) {
-        error("out of memory for a %lu-byte work buffer", (unsigned long)bytes);
-        return 0;
-    }
-    st = zl_frame_begin(&frame, &cfg, work, bytes, o->bg, (uint16_t)CLEAR_DEPTH);
-    if (st == ZL_OK) {
-        zl_style sty;
-        style_of(o, &sty);
-        st = zl_frame_add_mesh_styled(&frame, mesh, mvp, state, &sty);
-        if (st == ZL_OK && o->outline) {
-            zl_outline ol;
-            zl_state ost = *state;
-            outline_of(o, &ol, &ost, &sty);
-            st = zl_frame_add_outlines(&frame, mesh, mvp, &ost, &sty, &ol);
-        }
-    }
-    if (st != ZL_OK) {
-        error("zl_frame setup failed: %s", status_name(st));
+    for (attempt = 0; attempt < 2; attempt++) {
+        zl_frame_needs_t needs;
         free(work);
-        return 0;
+        if (frame_submit(o, mesh, mvp, state, &cfg, &frame, &work, &bytes) != ZL_OK) {
+            free(work);
+            return 0;
+        }
+        r = zl_frame_render(&frame, band_out, out);
+        if (r != ZL_ERR_CAPACITY || attempt == 1)
+            break;
+        needs = zl_frame_needs(&frame);
+        if (needs.active > 65534u || needs.triangles > 65535u) {
+            error("the scene needs %lu primitives and %lu records a row; zl_frame takes at most "
+                  "65535 and 65534 (--mode frame has no such limit)",
+                  (unsigned long)needs.triangles, (unsigned long)needs.active);
+            free(work);
+            return 0;
+        }
+        if (needs.triangles > cfg.max_triangles)
+            cfg.max_triangles = needs.triangles;
+        if (needs.active > cfg.max_active)
+            cfg.max_active = needs.active;
     }
-    r = (int)zl_frame_render(&frame, band_out, out);
     if (r != 0) {
         if (r != BAND_WRITE_FAILED)
             error("render failed: %s", status_name((zl_status)r));
@@ -923,14 +965,15 @@ static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
     }
     if (o->stats) {
         zl_frame_needs_t needs = zl_frame_needs(&frame);
-        zl_frame_config tight;
+        zl_frame_config tight = cfg;
         printf("work buffer: %lu bytes (zl_frame_bytes: %ux%u, %u row%s a band, max_triangles = "
-               "max_active = %u)\n",
+               "%lu, max_active = %lu)\n",
                (unsigned long)bytes, o->width, o->height, o->band_rows,
-               o->band_rows == 1 ? "" : "s", (unsigned)mesh->triangle_count);
-        frame_config(&tight, o, mesh, needs.triangles ? needs.triangles : 1,
-                     needs.active ? needs.active : 1);
-        printf("needs: %lu visible triangles, at most %lu active in a row; sized to that the "
+               o->band_rows == 1 ? "" : "s", (unsigned long)cfg.max_triangles,
+               (unsigned long)cfg.max_active);
+        tight.max_triangles = needs.triangles;
+        tight.max_active = needs.active ? needs.active : 1;
+        printf("needs: %lu visible primitives, at most %lu active in a row; sized to that the "
                "work buffer would be %lu bytes\n",
                (unsigned long)needs.triangles, (unsigned long)needs.active,
                (unsigned long)zl_frame_bytes(&tight));
