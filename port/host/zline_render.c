@@ -313,7 +313,10 @@ static const char state_usage_text[] =
     "                       1/w interpolated, as OpenGL); the default is linear\n"
     "                       in screen space, the library's default: no divide\n"
     "                       per pixel, and what a microcontroller draws unless\n"
-    "                       it asks for more\n";
+    "                       it asks for more\n"
+    "  With a perspective camera the core gets its near and far (zl_state\n"
+    "  near_z, far_z): each vertex's depth is the exact pseudodepth of its eye\n"
+    "  distance, unbiased.\n";
 
 static int parse_poly_mode(const char *s, size_t n, uint8_t *out)
 {
@@ -450,9 +453,18 @@ static zl_status ortho_projection(const options *o, zl_fixed aspect, zl_fixed ne
 static void apply_state_options(const options *o, zl_state *state, zl_style *sty)
 {
     if (state != NULL) {
+        zl_fixed n, f;
         state->depth_func = o->depth_func;
         state->depth_write = o->depth_write;
         state->color_mask = o->color_mask;
+        /* The perspective camera's near and far: the core maps each vertex's
+         * eye distance to depth exactly (unbiased), not through the matrix's
+         * Q16.16 constants, as zl_mat4_perspective got them in build_mvp. */
+        if (!o->pixel_space && !o->have_ortho && to_fixed(o->near_z, &n) && to_fixed(o->far_z, &f) && n > 0 &&
+            f > n) {
+            state->near_z = n;
+            state->far_z = f;
+        }
     }
     if (sty != NULL) {
         if (o->have_poly_mode) {

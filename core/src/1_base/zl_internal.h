@@ -31,8 +31,12 @@ typedef struct {
 /* Clip-space vertex carried through clipping. */
 typedef struct {
     int32_t x, y, z, w; /* Q16.16 */
-    int32_t r, g, b;    /* colour, Q8 */
+    uint16_t r, g, b;   /* colour, Q8: 0 .. 255 * 256 (16 bits keep the struct
+                           at 28 bytes with zd: the clipper's stack) */
+    uint32_t zd;        /* window depth in 1/65536 steps of the exact mapping
+                           (state near_z, far_z), or ZL_ZD_NONE: z / w */
 } zl_cvert;
+#define ZL_ZD_NONE 0xFFFFFFFFu
 
 /* Cached window vertex of scanline mode: 8 bytes. x == ZL_CACHE_COMPLEX marks a
  * vertex outside a clip plane or outside the int16 window range; triangles

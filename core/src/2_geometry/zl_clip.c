@@ -65,9 +65,11 @@ static int64_t intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, i
     res->y = lerp(in->y, out->y, t);
     res->z = lerp(in->z, out->z, t);
     res->w = lerp(in->w, out->w, t);
-    res->r = lerp(in->r, out->r, t);
-    res->g = lerp(in->g, out->g, t);
-    res->b = lerp(in->b, out->b, t);
+    /* between two colours: stays in 0 .. 255 * 256 */
+    res->r = (uint16_t)lerp(in->r, out->r, t);
+    res->g = (uint16_t)lerp(in->g, out->g, t);
+    res->b = (uint16_t)lerp(in->b, out->b, t);
+    res->zd = ZL_ZD_NONE; /* a vertex made here: depth z / w */
     /* Put the new vertex exactly on the planes whose equation is simple. */
     if (plane == PLANE_NEAR)
         res->z = 0;

@@ -38,7 +38,9 @@ static void identity_like(zl_mat4 *m, zl_fixed sx, zl_fixed tx, zl_fixed tz)
     m->m[11] = tz;
 }
 
-static int camera(zl_mat4 *mvp, zl_vec3 eye)
+/* The perspective camera; with exact != 0 the state gets its near and far
+ * for the exact depth mapping (zl_state near_z, far_z). */
+static int camera(zl_mat4 *mvp, zl_state *state, zl_vec3 eye, int exact)
 {
     zl_mat4 proj, view;
     zl_vec3 target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
@@ -47,6 +49,10 @@ static int camera(zl_mat4 *mvp, zl_vec3 eye)
         zl_mat4_look_at(&view, eye, target, up) != ZL_OK)
         return -1;
     zl_mat4_mul(mvp, &proj, &view);
+    if (exact) {
+        state->near_z = ZL_FX_ONE / 10;
+        state->far_z = ZL_FX_INT(100);
+    }
     return 0;
 }
 
@@ -55,10 +61,11 @@ int scene_make(scene *s, int which)
     memset(s, 0, sizeof *s);
     zl_state_default(&s->state);
     switch (which) {
-    case SCENE_BUNNY: {
-        /* exactly tools/bench/bench_scene.c */
+    case SCENE_BUNNY:
+    case SCENE_BUNNY_EXACT: {
+        /* exactly tools/bench/bench_scene.c (bunny_exact: and the exact depth mapping) */
         zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2};
-        s->name = "bunny";
+        s->name = which == SCENE_BUNNY ? "bunny" : "bunny_exact";
         s->mesh = bunny_mesh;
         s->state.cull = ZL_CULL_BACK;
         s->state.light_on = 1;
@@ -69,7 +76,7 @@ int scene_make(scene *s, int which)
         s->state.light_dir.x = 24576;
         s->state.light_dir.y = 32768;
         s->state.light_dir.z = 49152;
-        return camera(&s->mvp, eye);
+        return camera(&s->mvp, &s->state, eye, which == SCENE_BUNNY_EXACT);
     }
     case SCENE_FILL:
     case SCENE_FILL_GOURAUD:
@@ -102,7 +109,7 @@ int scene_make(scene *s, int which)
         s->mesh = tetra_mesh;
         s->state.shading = ZL_SHADE_GOURAUD;
         s->gouraud = 1;
-        return camera(&s->mvp, eye);
+        return camera(&s->mvp, &s->state, eye, 1); /* clipped: the exact mapping's clip path */
     }
     default:
         return -1;

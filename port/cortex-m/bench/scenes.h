@@ -12,6 +12,8 @@
  *   fill_gouraud the same with a colour per vertex, Gouraud shaded
  *   tris         triangle rate: a 64 x 64 grid, 8192 triangles of about 9
  *                pixels, covering the screen once, flat colour
+ *   bunny_exact  the benchmark scene with zl_state near_z = 0.1, far_z = 100:
+ *                the exact depth mapping (zline.h, Pseudodepth), its cost
  *   tetra        (golden test only) a vertex-coloured model close to the
  *                camera: near-plane clipping and Gouraud shading
  * The meshes are const (flash): bunny, grid and tetra are generated from OBJ
@@ -25,7 +27,7 @@
 #define SCENE_W 320
 #define SCENE_H 240
 
-enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_TETRA, SCENE_COUNT };
+enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_BUNNY_EXACT, SCENE_TETRA, SCENE_COUNT };
 
 typedef struct {
     const char *name;
