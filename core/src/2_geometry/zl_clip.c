@@ -115,6 +115,7 @@ static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *
         w->b = (uint16_t)color_q8(s->mesh, idx[k], 2);
     }
     out->n = 3;
+    out->clipped = 0;
     return 1;
 }
 
@@ -144,7 +145,8 @@ static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out
         return 0;
     for (k = 0; k < n; k++)
         zl_project(s, &src[k], &out->v[k]);
-    out->n = n;
+    out->n = (uint8_t)n; /* at most ZL_MAX_POLY */
+    out->clipped = any_out != 0;
     return 1;
 }
 
@@ -169,6 +171,9 @@ int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_
     } else {
         ok = polygon_clipped(s, idx, out);
     }
+    /* After the clipper's frame is gone: the solve is not on its stack. */
+    if (ok && out->clipped)
+        zl_poly_orig_depths(s, t, out);
     return ok;
 }
 
@@ -237,7 +242,8 @@ static ZL_NOINLINE int tex_clipped(const zl_source *s, const zl_style *sty, cons
         out->v[k] = src[k].v;
         out->w[k] = w_of(s, src[k].c.w);
     }
-    out->p.n = n;
+    out->p.n = (uint8_t)n;
+    out->p.clipped = 1;
     return 1;
 }
 
@@ -263,8 +269,12 @@ int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_t
     int clip = tex_vertices(s, sty, idx, out);
     if (clip < 0)
         return 0;
-    if (clip)
-        return tex_clipped(s, sty, idx, out);
+    if (clip) {
+        if (!tex_clipped(s, sty, idx, out))
+            return 0;
+        zl_poly_orig_depths(s, t, &out->p);
+        return 1;
+    }
     /* Not clipped: the geometry exactly as zl_tri_polygon_geom gives it
      * (from the cache in scanline mode), attributes of the vertices. */
     return zl_tri_polygon_geom(s, sty, t, &out->p);
