@@ -28,6 +28,8 @@
  *   +-1 of the exact value of the snapped triangle's depth plane at that
  *   centre. (Nearly edge-on triangles whose depth changes by more than 2^20
  *   steps per pixel get depths clamped to their vertices' range instead.)
+ *   A triangle that clipping cuts (see Clipping) is the exception: its depth
+ *   is that of the original triangle, not of its snapped pieces.
  *
  * Pseudodepth: for the perspective projection, with eye distance z (> 0),
  *   near n and far f,
@@ -52,8 +54,8 @@
  *   f >= 2n, so each vertex's stored depth is within 0.5 step (plus that
  *   1/1000) of the exact value and the mean error vanishes (measured
  *   against a long double reference by tests/host/test_depth_exact.c:
- *   at most 0.00006 step, mean +0.00001 on the benchmark scene). Vertices
- *   made by clipping still take z_clip / w_clip.
+ *   at most 0.00006 step, mean +0.00001 on the benchmark scene). A clipped
+ *   triangle takes the same mapping through its Q16.16 clip w (Clipping).
  *
  * Clipping: triangles are clipped in homogeneous clip space against
  *   w > 0, near (z >= 0), far (z <= w), and four x/y planes ZL_GUARD_PX
@@ -62,6 +64,28 @@
  *   the guard band covers exactly the in-viewport pixels of the unclipped
  *   triangle. A triangle through the eye point is clipped at the near plane
  *   like any other: no wrap-around, no division by zero.
+ *   Clipping decides coverage only (the snapped clipped polygon, split into
+ *   a fan, by the rules above). Depth and screen-linear Gouraud colour come
+ *   from the original triangle, as if it had not been cut: at every pixel a
+ *   clipped triangle covers, the stored depth is within +-1 of
+ *   clamp(round(65535 z_w), 0, 65535) with z_w the exact depth at the pixel
+ *   centre of the triangle through its three clip-space vertices as the
+ *   transform gives them (Q16.16, NOT snapped: homogeneous 2D
+ *   interpolation, Olano and Greer 1997, which needs no division by a w
+ *   that may be zero or negative): z_clip / w_clip, or with state.near_z
+ *   and far_z set 65535 (A + B / w) with w the clip w of that point. A
+ *   pixel the snapped polygon covers just beyond the near or far plane
+ *   gets 0 or 65535. When every vertex has w > 0, the Gouraud colour is
+ *   within +-1 of the exact screen-linear interpolation of the vertex
+ *   colours at the unsnapped projected vertices (times the light
+ *   intensity / 255). Exceptions: pixels where the depth changes by more
+ *   than 65536 steps per pixel; a triangle with a vertex at w <= 0 (across
+ *   the eye plane) keeps, for its colour, the colours the clipper gives
+ *   its polygon's vertices; textures and perspective-correct Gouraud are
+ *   interpolated per piece; zl_visibility's painter and BSP draw the
+ *   pieces through the original depth at their snapped vertices, clamped
+ *   to 0 .. 65535 (its AET and ray caster use the original plane).
+ *   Checked against an exact reference by tests/host/test_clip_planes.c.
  *
  * Order: triangles are drawn in submission order; the depth test decides
  *   per pixel. Frame mode and the scanline/band modes of zl_frame produce
