@@ -53,7 +53,7 @@ static uint16_t depth_buf[W * H], depth_ref[W * H];
 static uint64_t work[200000 / 8];
 
 typedef struct {
-    unsigned tris, clipped_tris, pixels, color_pixels;
+    unsigned tris, clipped_tris, pixels, color_pixels, steep;
     unsigned near_tris, far_tris, both_tris, eye_tris;
     double max_depth_err, max_color_err;
 } stats;
@@ -144,7 +144,56 @@ static int reference(const tri_ref *t, int i, int j, long double *depth, long do
     return 1;
 }
 
-/* Frame mode, then scanline (band 1) and band 5 through zl_frame: the same bytes. */
+/* The RGB565 LESS paths (the flat span loops of both modes): the same
+ * depth as the RGB888 ALWAYS draw in depth_buf, into a target cleared to
+ * 65535 (a fragment of 65535 fails LESS there and leaves the same value). */
+static void draw_565_less(const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *st)
+{
+    static uint16_t c565[W * H], d565[W * H];
+    zl_context ctx;
+    zl_target tg;
+    zl_rgb black = {0, 0, 0};
+    zl_frame_config cfg;
+    zl_frame fr;
+    zl_band band;
+    zl_status rc;
+    zl_state s = *st;
+    s.depth_func = ZL_LESS;
+    memset(&tg, 0, sizeof tg);
+    tg.color = c565;
+    tg.color_stride = W * 2;
+    tg.depth = d565;
+    tg.depth_stride = W * 2;
+    tg.width = W;
+    tg.height = H;
+    tg.format = ZL_FORMAT_RGB565;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
+    ctx.state = s;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, black, 0xFFFF));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, mesh, mvp));
+    TEST_ASSERT_EQUAL_MEMORY(depth_buf, d565, sizeof d565);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.width = W;
+    cfg.height = H;
+    cfg.band_rows = 1;
+    cfg.format = ZL_FORMAT_RGB565;
+    cfg.color_buffers = 1;
+    cfg.gouraud = 1;
+    cfg.max_meshes = 1;
+    cfg.max_vertices = 3;
+    cfg.max_triangles = 1;
+    cfg.max_active = 8;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&fr, &cfg, work, sizeof work, black, 0xFFFF));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&fr, mesh, mvp, &s));
+    while ((rc = zl_frame_next_band(&fr, &band)) == ZL_OK) {
+        TEST_ASSERT_EQUAL_MEMORY(&c565[band.first_row * W], band.color, W * 2);
+        TEST_ASSERT_EQUAL_MEMORY(&d565[band.first_row * W], band.depth, W * 2);
+    }
+    TEST_ASSERT_EQUAL_INT(ZL_DONE, rc);
+}
+
+/* Frame mode, then scanline (band 1) and band 5 through zl_frame: the same
+ * bytes; then the RGB565 LESS paths. */
 static void draw_all_modes(const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *st)
 {
     zl_context ctx;
@@ -196,6 +245,7 @@ static void draw_all_modes(const zl_mesh *mesh, const zl_mat4 *mvp, const zl_sta
         TEST_ASSERT_EQUAL_MEMORY(color_buf, color_ref, sizeof color_buf);
         TEST_ASSERT_EQUAL_MEMORY(depth_buf, depth_ref, sizeof depth_buf);
     }
+    draw_565_less(mesh, mvp, st);
 }
 
 /* Draw triangle t (positions p, colours) and check every covered pixel. */
@@ -261,8 +311,10 @@ static void check_triangle(const zl_fixed p[9], const uint8_t rgb[9], const zl_m
              * full depth range) is clamped; skip such pixels */
             TEST_ASSERT_TRUE(reference(&t, i + 1, j, &gx, tmp));
             TEST_ASSERT_TRUE(reference(&t, i, j + 1, &gy, tmp));
-            if (fabsl(gx - want) > 65536.0L || fabsl(gy - want) > 65536.0L)
+            if (fabsl(gx - want) > 65536.0L || fabsl(gy - want) > 65536.0L) {
+                st->steep++;
                 continue;
+            }
             want = want < 0 ? 0 : (want > 65535 ? 65535 : want);
             err = fabs((double)(depth_buf[j * W + i] - roundl(want)));
             st->pixels++;
@@ -296,9 +348,10 @@ static void random_colors(uint8_t rgb[9])
 static void print_stats(const char *name, const stats *st)
 {
     printf("%s: %u triangles, %u clipped (near %u, far %u, both %u, eye plane %u), %u pixels checked "
-           "(%u for colour): max depth error %.3f steps, max colour error %.3f\n",
+           "(%u for colour, %u skipped: over 65536 steps per pixel): max depth error %.3f steps, max colour "
+           "error %.3f\n",
            name, st->tris, st->clipped_tris, st->near_tris, st->far_tris, st->both_tris, st->eye_tris, st->pixels,
-           st->color_pixels, st->max_depth_err, st->max_color_err);
+           st->color_pixels, st->steep, st->max_depth_err, st->max_color_err);
 }
 
 /* Pixel space: x, y pixels, z window depth, crossing 0 and 1. */
