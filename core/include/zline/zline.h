@@ -82,10 +82,9 @@
  *   than 65536 steps per pixel; a triangle with a vertex at w <= 0 (across
  *   the eye plane) keeps, for its colour, the colours the clipper gives
  *   its polygon's vertices; textures and perspective-correct Gouraud are
- *   interpolated per piece; zl_visibility's painter and BSP draw the
- *   pieces through the original depth at their snapped vertices, clamped
- *   to 0 .. 65535 (its AET and ray caster use the original plane).
- *   Checked against an exact reference by tests/host/test_clip_planes.c.
+ *   interpolated per piece. zl_visibility's AET and ray caster compare the
+ *   same original planes (its painter and BSP store no depth). Checked
+ *   against an exact reference by tests/host/test_clip_planes.c.
  *
  * Order: triangles are drawn in submission order; the depth test decides
  *   per pixel. Frame mode and the scanline/band modes of zl_frame produce

@@ -259,10 +259,6 @@ void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly);
  * vertex in front of the eye). */
 int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, int colour, uint8_t light,
                        zl_attr *z, zl_attr col[3]);
-/* The depth of every vertex of the clipped polygon of triangle t: the
- * original triangle's (as zl_tri_orig_planes) at its snapped position,
- * clamped to 0 .. 65535 steps, instead of the clipper's vertex's own. */
-void zl_poly_orig_depths(const zl_source *s, uint32_t t, zl_poly *poly);
 /* The original triangle's depth (Q16 of the stored scale, not clamped: it
  * leaves 0 .. 65535 beyond the near and far planes) at three subpixel
  * positions; 0 when it has no plane. */
@@ -364,6 +360,9 @@ void zl_fill16(uint16_t *p, uint16_t v, uint32_t n);
 /* Polygon offset of a triangle, Q20 depth steps: factor * max(|dz/dx|,
  * |dz/dy|) + units; 0 when both are 0. */
 int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_style *sty);
+/* zl_tri_offset from a depth plane's own gradients (a clipped piece with
+ * the original triangle's plane). */
+int64_t zl_tri_offset_plane(const zl_attr *z, const zl_style *sty);
 /* Move a set-up triangle's depth plane by an offset (Q20 steps). */
 void zl_tri_apply_offset(zl_active *t, int64_t offset);
 /* Plot the current row of a line or point record into the row buffers and

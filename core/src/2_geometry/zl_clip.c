@@ -146,7 +146,7 @@ static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out
     for (k = 0; k < n; k++)
         zl_project(s, &src[k], &out->v[k]);
     out->n = (uint8_t)n; /* at most ZL_MAX_POLY */
-    out->clipped = any_out != 0;
+    out->clipped = (uint8_t)any_out; /* the 7 plane bits: non-zero when clipped */
     return 1;
 }
 
@@ -171,9 +171,6 @@ int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_
     } else {
         ok = polygon_clipped(s, idx, out);
     }
-    /* After the clipper's frame is gone: the solve is not on its stack. */
-    if (ok && out->clipped)
-        zl_poly_orig_depths(s, t, out);
     return ok;
 }
 
@@ -269,12 +266,8 @@ int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_t
     int clip = tex_vertices(s, sty, idx, out);
     if (clip < 0)
         return 0;
-    if (clip) {
-        if (!tex_clipped(s, sty, idx, out))
-            return 0;
-        zl_poly_orig_depths(s, t, &out->p);
-        return 1;
-    }
+    if (clip)
+        return tex_clipped(s, sty, idx, out);
     /* Not clipped: the geometry exactly as zl_tri_polygon_geom gives it
      * (from the cache in scanline mode), attributes of the vertices. */
     return zl_tri_polygon_geom(s, sty, t, &out->p);

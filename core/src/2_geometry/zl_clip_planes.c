@@ -394,33 +394,11 @@ static void depth_num(big *num, big *dq, const big g[3], const hsolve *h, int64_
     }
 }
 
-/* zl_poly_orig_depths once the triangle is solved (out of line: its
- * numbers are not on the stack while the vertices are transformed). */
-static ZL_NOINLINE void vertex_depths(const hsolve *h, const int32_t zc[3], int64_t nr, int64_t fr, zl_poly *poly)
-{
-    int64_t a[3];
-    big g[3];
-    unsigned i;
-    for (i = 0; i < 3; i++)
-        a[i] = fr != 0 ? 1 : zc[i];
-    weighted(g, h, a);
-    for (i = 0; i < poly->n; i++) {
-        /* a vertex at subpixel x is at 2X = x / 8: n_x = (sx x + 8 ox) / (8 dd);
-         * |sx x| < 2^35, so the numerators stay below 2^164 before the scale
-         * 65535 2^16 (< 2^32) */
-        zl_wvert *v = &poly->v[i];
-        big num, dq;
-        int64_t z;
-        depth_num(&num, &dq, g, h, h->vp.sx * v->x + 8 * h->vp.ox, h->vp.sy * v->y + 8 * h->vp.oy, 8 * h->vp.ow, 8,
-                  nr, fr);
-        big_mul(&num, &num, (int64_t)65535 << 16);
-        z = big_div_round(&num, &dq, (int64_t)1 << 60);
-        v->z = (uint32_t)(z < 0 ? 0 : (z > (int64_t)65535 << 16 ? (int64_t)65535 << 16 : z));
-    }
-}
-
 /* Depths (Q16 of the stored scale, unclamped) at three subpixel positions,
- * once the triangle is solved (out of line, as vertex_depths). */
+ * once the triangle is solved (out of line: its numbers are not on the
+ * stack while the vertices are transformed). A position at subpixel x is at
+ * 2X = x / 8: n_x = (sx x + 8 ox) / (8 dd); |sx x| < 2^35, so the
+ * numerators stay below 2^164 before the scale 65535 2^16 (< 2^32). */
 static ZL_NOINLINE void depths3(const hsolve *h, const int32_t zc[3], int64_t nr, int64_t fr, const int32_t x[3],
                                 const int32_t y[3], int64_t z[3])
 {
@@ -449,16 +427,6 @@ int zl_tri_orig_depths3(const zl_source *s, uint32_t t, const int32_t x[3], cons
         return 0;
     depths3(&h, zc, exact ? s->state->near_z : 0, exact ? s->state->far_z : 0, x, y, z);
     return 1;
-}
-
-void zl_poly_orig_depths(const zl_source *s, uint32_t t, zl_poly *poly)
-{
-    hsolve h;
-    int32_t zc[3], w[3];
-    uint16_t rgb[3][3];
-    int exact = s->mvp != NULL && s->state->far_z != 0;
-    if (solve_of(s, t, 0, 0, &h, zc, w, rgb))
-        vertex_depths(&h, zc, exact ? s->state->near_z : 0, exact ? s->state->far_z : 0, poly);
 }
 
 int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, int colour, uint8_t light,

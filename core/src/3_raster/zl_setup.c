@@ -395,6 +395,21 @@ int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, c
     return off;
 }
 
+int64_t zl_tri_offset_plane(const zl_attr *z, const zl_style *sty)
+{
+    const int64_t limit = (int64_t)65535 << ZL_ATTR_FRAC; /* as zl_tri_offset */
+    int64_t off, mx, my;
+    if (sty == NULL || (sty->offset_factor == 0 && sty->offset_units == 0))
+        return 0;
+    off = (int64_t)sty->offset_units * (1 << (ZL_ATTR_FRAC - 16));
+    mx = z->dx < 0 ? -z->dx : z->dx;
+    my = z->dy < 0 ? -z->dy : z->dy;
+    mx = mx > my ? mx : my;
+    mx = mx > limit ? limit : mx;
+    /* |factor| <= 2^24 and mx <= 2^36: the product fits 64 bits. */
+    return off + zl_floor_shift64((int64_t)sty->offset_factor * mx, 16);
+}
+
 void zl_tri_apply_offset(zl_active *t, int64_t offset)
 {
     const int64_t top = (int64_t)65535 << 16;

@@ -447,9 +447,12 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
         t->rgb[0] = flat.r;
         t->rgb[1] = flat.g;
         t->rgb[2] = flat.b;
-        if (poly->clipped)
+        if (poly->clipped) {
             zl_tri_orig_piece(s, sty, tri, poly, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], t, g);
-        off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);
+            off = zl_tri_offset_plane(&t->z, sty);
+        } else {
+            off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);
+        }
         if (off != 0)
             zl_tri_apply_offset(t, off);
         return 1;
