@@ -68,15 +68,13 @@ static ZL_ALWAYS_INLINE uint32_t depth_of(uint32_t zq)
  * triangle's (zl_tri_set_planes): there w may leave the depth range at a
  * pixel the snapped polygon covers just beyond the near or far plane, and
  * is kept (wrapping, |w| < 2^31) so the span's next pixels stay on the
- * plane; depth_of clamps each pixel. In range, the common case, w itself:
- * lo14 <= w <= hi14 is one unsigned compare (a w below lo14 wraps to a
- * huge difference). No call: the row loops keep their registers. */
+ * plane; depth_of clamps each pixel. In range, the common case, w itself. */
+uint32_t zl_depth_start_clamp(int64_t w, uint32_t lo14, uint32_t hi14);
 static ZL_ALWAYS_INLINE uint32_t zl_depth_start_q14(int64_t w, uint32_t lo14, uint32_t hi14)
 {
-    uint32_t z = (uint32_t)w; /* modulo 2^32 */
-    if ((uint64_t)w - lo14 > (uint32_t)(hi14 - lo14) && lo14 <= hi14)
-        z = w < (int64_t)lo14 ? lo14 : hi14;
-    return z + (1u << 13);
+    if (w >= (int64_t)lo14 && w <= (int64_t)hi14)
+        return (uint32_t)w + (1u << 13);
+    return zl_depth_start_clamp(w, lo14, hi14);
 }
 
 /* Write one pixel's bytes, keeping the masked-off bits of the old pixel.
