@@ -494,7 +494,7 @@ static void test_depth_edges(void)
         for (j = 0; j < 7u; j++) {
             zl_mat4 m;
             zl_source s = {0};
-            zl_cvert v = {0, 0, 0, 0, 0, 0, 0};
+            zl_cvert v = {0, 0, 0, 0, 0, 0, 0, ZL_ZD_NONE};
             zl_wvert out;
             int64_t z = zs[j] > w ? w : zs[j];
             zl_mat4_identity(&m);
@@ -517,7 +517,7 @@ static void test_project_matches_64bit_formulas(void)
     for (k = 0; k < 100000u; k++) {
         zl_mat4 m;
         zl_source s = {0};
-        zl_cvert v = {0, 0, 0, 0, 0, 0, 0};
+        zl_cvert v = {0, 0, 0, 0, 0, 0, 0, ZL_ZD_NONE};
         zl_wvert out;
         int64_t w, z;
         zl_mat4_identity(&m);

@@ -188,6 +188,17 @@ typedef struct {
     double fill[3][6];        /* direction, colour */
     zl_rgb specular;
     int shininess;
+    /* render state options (issue #14) */
+    int have_state;           /* any of them given */
+    uint8_t depth_func, depth_write, color_mask;
+    uint16_t clear_depth;     /* stored depth the buffer is cleared to */
+    int have_ortho;
+    double ortho_height;
+    int have_offset;
+    zl_fixed offset_factor, offset_units;
+    int have_poly_mode;
+    uint8_t poly_front, poly_back;
+    int persp_color;
 } options;
 
 /* ------------------------------------------------------------------ errors */
@@ -412,6 +423,201 @@ static int to_vec3(const double *v, zl_vec3 *out)
     return to_fixed(v[0], &out->x) && to_fixed(v[1], &out->y) && to_fixed(v[2], &out->z);
 }
 
+/* ------------------------------------------- render state options (#14) */
+
+/* Help of the render state options, printed after usage_text too. */
+static const char state_usage_text[] =
+    "\nRender state (zl_state and zl_style; with the z-buffer only)\n"
+    "  --depth-func F       depth test: never, less (default), equal, lequal,\n"
+    "                       greater, notequal, gequal or always\n"
+    "  --depth-write on|off depth write mask (default on)\n"
+    "  --color-mask M       colour channels written: a set of the letters r, g\n"
+    "                       and b (rgb default, e.g. rg) or none\n"
+    "  --clear-depth D      depth the buffer is cleared to, 0..1 as glClearDepth\n"
+    "                       (stored round(65535 D); default 1); --shade depth\n"
+    "                       shows the background where the depth is still that\n"
+    "  --ortho H            orthographic camera seeing a box H units high (width\n"
+    "                       H times the aspect ratio) between --near and --far;\n"
+    "                       depth linear in eye distance (not with --fov)\n"
+    "  --polygon-offset F,U polygon offset (glPolygonOffset): depth moved by\n"
+    "                       F x the depth slope + U steps; -256 <= F <= 256\n"
+    "  --polygon-mode M     fill (default), line or point for every face, or\n"
+    "                       FRONT,BACK for the two sides (glPolygonMode; not\n"
+    "                       with --wireframe or --points)\n"
+    "  --persp-color        perspective-correct Gouraud colours (colour/w and\n"
+    "                       1/w interpolated, as OpenGL); the default is linear\n"
+    "                       in screen space, the library's default: no divide\n"
+    "                       per pixel, and what a microcontroller draws unless\n"
+    "                       it asks for more\n"
+    "  With a perspective camera the core gets its near and far (zl_state\n"
+    "  near_z, far_z): each vertex's depth is the exact pseudodepth of its eye\n"
+    "  distance, unbiased.\n";
+
+static int parse_poly_mode(const char *s, size_t n, uint8_t *out)
+{
+    static const char *const names[] = {"fill", "line", "point"};
+    uint8_t k;
+    for (k = 0; k < 3; k++)
+        if (strlen(names[k]) == n && strncmp(s, names[k], n) == 0) {
+            *out = k; /* ZL_POLY_FILL, ZL_POLY_LINE, ZL_POLY_POINT */
+            return 1;
+        }
+    return 0;
+}
+
+/*
+ * The render state options. Returns 1 when `name` is one of them and its
+ * value is good, 0 when it is not one of them, or usage_error's status (> 1)
+ * for a bad value. *val is the value (NULL: none given yet), taken from
+ * argv[*i + 1] when the option needs one.
+ */
+static int parse_state_option(const char *name, const char *val, int argc, char **argv, int *i,
+                              options *o)
+{
+    static const char *const funcs[] = {"never",    "less",   "equal",  "lequal",
+                                        "greater",  "notequal", "gequal", "always"};
+    int takes_value = strcmp(name, "--persp-color") != 0;
+    if (strcmp(name, "--depth-func") != 0 && strcmp(name, "--depth-write") != 0 &&
+        strcmp(name, "--color-mask") != 0 && strcmp(name, "--colour-mask") != 0 &&
+        strcmp(name, "--clear-depth") != 0 && strcmp(name, "--ortho") != 0 &&
+        strcmp(name, "--polygon-offset") != 0 && strcmp(name, "--polygon-mode") != 0 &&
+        strcmp(name, "--persp-color") != 0)
+        return 0;
+    if (!takes_value && val != NULL)
+        return usage_error("%s takes no value", name);
+    if (takes_value && val == NULL) {
+        if (*i + 1 >= argc)
+            return usage_error("%s needs a value", name);
+        val = argv[++*i];
+    }
+    if (strcmp(name, "--depth-func") == 0) {
+        int k;
+        for (k = 0; k < 8 && strcmp(val, funcs[k]) != 0; k++)
+            ;
+        if (k == 8)
+            return usage_error("--depth-func: expected never, less, equal, lequal, greater, "
+                               "notequal, gequal or always, got '%s'",
+                               val);
+        o->depth_func = (uint8_t)k; /* zl_depth_func: ZL_NEVER .. ZL_ALWAYS in this order */
+    } else if (strcmp(name, "--depth-write") == 0) {
+        if (strcmp(val, "on") == 0)
+            o->depth_write = 1;
+        else if (strcmp(val, "off") == 0)
+            o->depth_write = 0;
+        else
+            return usage_error("--depth-write: expected on or off, got '%s'", val);
+    } else if (strcmp(name, "--color-mask") == 0 || strcmp(name, "--colour-mask") == 0) {
+        const char *p;
+        unsigned m = 0;
+        if (strcmp(val, "none") != 0) {
+            for (p = val; *p; p++) {
+                unsigned bit = *p == 'r' ? ZL_MASK_R : *p == 'g' ? ZL_MASK_G : *p == 'b' ? ZL_MASK_B : 0u;
+                if (bit == 0 || (m & bit))
+                    break;
+                m |= bit;
+            }
+            if (*p != '\0' || m == 0)
+                return usage_error("--color-mask: expected some of the letters r, g, b (each "
+                                   "once) or none, got '%s'",
+                                   val);
+        }
+        o->color_mask = (uint8_t)m;
+    } else if (strcmp(name, "--clear-depth") == 0) {
+        double d;
+        if (!parse_real(val, &d) || d < 0.0 || d > 1.0)
+            return usage_error("--clear-depth: expected a depth 0..1, got '%s'", val);
+        o->clear_depth = (uint16_t)floor(d * 65535.0 + 0.5);
+    } else if (strcmp(name, "--ortho") == 0) {
+        if (!parse_real(val, &o->ortho_height) || !(o->ortho_height > 0.0 && o->ortho_height <= 32767.0))
+            return usage_error("--ortho: expected a height in (0, 32767], got '%s'", val);
+        o->have_ortho = 1;
+    } else if (strcmp(name, "--polygon-offset") == 0) {
+        double v[2];
+        if (!parse_reals(val, v, 2) || v[0] < -256.0 || v[0] > 256.0 || !to_fixed(v[0], &o->offset_factor) ||
+            !to_fixed(v[1], &o->offset_units))
+            return usage_error("--polygon-offset: expected FACTOR,UNITS with -256 <= FACTOR <= 256 "
+                               "and UNITS in -32768 .. 32767, got '%s'",
+                               val);
+        o->have_offset = o->offset_factor != 0 || o->offset_units != 0;
+    } else if (strcmp(name, "--polygon-mode") == 0) {
+        const char *comma = strchr(val, ',');
+        size_t n = comma != NULL ? (size_t)(comma - val) : strlen(val);
+        if (!parse_poly_mode(val, n, &o->poly_front) ||
+            !parse_poly_mode(comma != NULL ? comma + 1 : val, comma != NULL ? strlen(comma + 1) : n,
+                             &o->poly_back))
+            return usage_error("--polygon-mode: expected fill, line or point, or FRONT,BACK of "
+                               "those, got '%s'",
+                               val);
+        o->have_poly_mode = 1;
+    } else {
+        o->persp_color = 1;
+    }
+    return 1;
+}
+
+/* Checks between the state options and the others, after all are parsed. */
+static int check_state_options(const options *o)
+{
+    if (o->have_poly_mode && (o->wireframe || o->points))
+        return usage_error("--polygon-mode and --wireframe or --points both set the polygon mode: "
+                           "give one");
+    if (o->have_ortho && o->have_fov)
+        return usage_error("--ortho and --fov: an orthographic camera has no field of view");
+    if (o->have_ortho && o->pixel_space)
+        return usage_error("--pixel-space takes no camera options (--ortho)");
+    if (o->have_state && o->visibility != 0)
+        return usage_error("--visibility other than zbuffer takes no render state options (--depth-func, "
+                           "--depth-write, --color-mask, --clear-depth, --ortho, --polygon-offset, "
+                           "--polygon-mode, --persp-color)");
+    return 0;
+}
+
+/* --ortho: the box H high, H x aspect wide, centred on the view axis. */
+static zl_status ortho_projection(const options *o, zl_fixed aspect, zl_fixed near_z, zl_fixed far_z,
+                                  zl_mat4 *proj)
+{
+    zl_fixed half_h, half_w;
+    double hw = o->ortho_height * 0.5 * (aspect / 65536.0);
+    if (!to_fixed(o->ortho_height * 0.5, &half_h) || !to_fixed(hw, &half_w) || half_h <= 0 || half_w <= 0 ||
+        hw > 16383.0)
+        return ZL_ERR_RANGE;
+    return zl_mat4_ortho(proj, -half_w, half_w, -half_h, half_h, near_z, far_z);
+}
+
+/* The state options into the core's state and style. */
+static void apply_state_options(const options *o, zl_state *state, zl_style *sty)
+{
+    if (state != NULL) {
+        zl_fixed n, f;
+        state->depth_func = o->depth_func;
+        state->depth_write = o->depth_write;
+        state->color_mask = o->color_mask;
+        /* The perspective camera's near and far: the core maps each vertex's
+         * eye distance to depth exactly (unbiased), not through the matrix's
+         * Q16.16 constants, as zl_mat4_perspective got them in build_mvp. */
+        if (!o->pixel_space && !o->have_ortho && to_fixed(o->near_z, &n) && to_fixed(o->far_z, &f) && n > 0 &&
+            f > n) {
+            state->near_z = n;
+            state->far_z = f;
+        }
+    }
+    if (sty != NULL) {
+        if (o->have_poly_mode) {
+            sty->polygon_front = o->poly_front;
+            sty->polygon_back = o->poly_back;
+        }
+        sty->offset_factor = o->offset_factor;
+        sty->offset_units = o->offset_units;
+        sty->persp_gouraud = (uint8_t)o->persp_color;
+    }
+}
+
+/* Whether the state options need a styled frame (cfg.styled, cfg.textured). */
+static int state_styled(const options *o)
+{
+    return o->have_poly_mode || o->have_offset || o->persp_color;
+}
+
 static int parse_options(int argc, char **argv, options *o)
 {
     int i, positional = 0;
@@ -434,6 +640,10 @@ static int parse_options(int argc, char **argv, options *o)
     o->color.r = o->color.g = o->color.b = 255;
     o->normalize = 1;
     o->format = ZL_FORMAT_RGB888;
+    o->depth_func = ZL_LESS;
+    o->depth_write = 1;
+    o->color_mask = ZL_MASK_RGB;
+    o->clear_depth = CLEAR_DEPTH;
 
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -482,6 +692,7 @@ static int parse_options(int argc, char **argv, options *o)
             fputs(vis_usage_text, stdout);
             fputs(features_usage_text, stdout);
             fputs(smooth_usage_text, stdout);
+            fputs(state_usage_text, stdout);
             return -1;
         } else if (FLAG("--size")) {
             unsigned long w, h;
@@ -703,7 +914,12 @@ static int parse_options(int argc, char **argv, options *o)
             NO_VALUE;
             o->stats = 1;
         } else {
-            return usage_error("unknown option '%s'", a);
+            int r = parse_state_option(name, val, argc, argv, &i, o);
+            if (r == 0)
+                return usage_error("unknown option '%s'", a);
+            if (r > 1)
+                return r;
+            o->have_state = 1;
         }
 #undef FLAG
 #undef NEEDS_VALUE
@@ -730,6 +946,8 @@ static int parse_options(int argc, char **argv, options *o)
     }
     if (o->band_rows > o->height)
         o->band_rows = o->height;
+    if (check_state_options(o) != 0)
+        return EXIT_USAGE;
     if (o->visibility != 0 && (o->depth_out != NULL || o->shade != SHADE_FLAT || o->pixel_space ||
                                o->band_rows != 0))
         return usage_error("--visibility other than zbuffer draws flat colours from a camera: it takes no "
@@ -807,7 +1025,17 @@ static int build_mvp(const options *o, zl_mat4 *mvp)
         return 0;
     }
     aspect = (zl_fixed)(((int64_t)o->width * 65536 + o->height / 2) / o->height);
-    st = zl_mat4_perspective(&proj, zl_angle_from_deg(fov_deg), aspect, near_z, far_z);
+    if (o->have_ortho) {
+        st = ortho_projection(o, aspect, near_z, far_z, &proj);
+        if (st != ZL_OK) {
+            error("projection: zl_mat4_ortho failed with %s: need --ortho H with H x aspect / 2 "
+                  "below 16384 and 0 < near < far",
+                  status_name(st));
+            return 0;
+        }
+    } else {
+        st = zl_mat4_perspective(&proj, zl_angle_from_deg(fov_deg), aspect, near_z, far_z);
+    }
     if (st != ZL_OK) {
         error("projection: zl_mat4_perspective failed with %s: need 0 < fov < 180, "
               "0 < near < far <= 32767, near >= far / 65536, aspect 1/64 .. 64",
@@ -856,8 +1084,14 @@ static void depth_range(output *out, const zl_obj *obj, const zl_mat4 *mvp, cons
             zl_vec4 c;
             if (zl_transform_point(mvp, p, &c) != ZL_OK)
                 continue;
-            /* w_clip is the eye distance; zl_depth_of_distance clamps to [near, far] */
-            d = zl_depth_of_distance(near_z, far_z, c.w);
+            if (o->have_ortho) {
+                /* orthographic: w_clip = 1 and z_clip is the window depth */
+                int64_t z = ((int64_t)c.z * 65535 + 32768) >> 16;
+                d = (uint16_t)(z < 0 ? 0 : (z > 65535 ? 65535 : z));
+            } else {
+                /* w_clip is the eye distance; zl_depth_of_distance clamps to [near, far] */
+                d = zl_depth_of_distance(near_z, far_z, c.w);
+            }
         }
         if (d < lo)
             lo = d;
@@ -898,7 +1132,7 @@ static int write_rows(output *out, const void *color, int32_t cstride, const uin
         if (o->shade == SHADE_DEPTH && dstride != 0) {
             for (x = 0; x < o->width; x++) {
                 uint8_t *px = out->grey_row + 3 * (size_t)x;
-                if (drow[x] == CLEAR_DEPTH) {
+                if (drow[x] == o->clear_depth) {
                     px[0] = o->bg.r;
                     px[1] = o->bg.g;
                     px[2] = o->bg.b;
@@ -959,11 +1193,13 @@ static void style_of(const options *o, zl_style *sty)
     }
     sty->blend = (uint8_t)o->blend;
     sty->alpha = (uint8_t)(o->blend ? o->alpha : 255);
+    apply_state_options(o, NULL, sty);
 }
 
 static int styled(const options *o)
 {
-    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines || o->texture_path != NULL || o->blend;
+    return o->wireframe || o->points || o->toon || o->outline || o->aa_lines || o->texture_path != NULL || o->blend ||
+           state_styled(o);
 }
 
 /* Outline: silhouettes and creases over 60 degrees, black, drawn with LEQUAL
@@ -1008,10 +1244,13 @@ static int render_frame(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
     target.height = (uint16_t)o->height;
     target.format = (uint8_t)o->format;
     st = zl_init(&ctx, &target);
-    if (st == ZL_OK) {
+    /* Clear with zl_init's state: zl_clear honours the colour and depth
+     * write masks (as glClear), and the whole frame must start cleared, as
+     * every band of zl_frame does. */
+    if (st == ZL_OK)
+        st = zl_clear(&ctx, o->bg, o->clear_depth);
+    if (st == ZL_OK)
         ctx.state = *state;
-        st = zl_clear(&ctx, o->bg, (uint16_t)CLEAR_DEPTH);
-    }
     if (st == ZL_OK) {
         style_of(o, &ctx.style);
         st = zl_draw_mesh(&ctx, mesh, mvp);
@@ -1052,53 +1291,95 @@ static void frame_config(zl_frame_config *cfg, const options *o, const zl_mesh *
     if (styled(o)) {
         /* line and point pieces: 3 a triangle; outline edges: 1 each */
         cfg->styled = 1;
-        cfg->textured = o->texture_path != NULL || o->blend; /* blending uses the styled rows */
+        cfg->textured = o->texture_path != NULL || o->blend || o->persp_color; /* blending uses the styled rows */
         cfg->max_meshes = 2;
         cfg->max_triangles = triangles + o->edge_count;
         cfg->max_active = active * 3u + o->edge_count;
     }
 }
 
+/*
+ * Begin a frame in a fresh work buffer of exactly zl_frame_bytes(cfg) bytes
+ * and submit the scene (the mesh, then its outline). *work is the buffer to
+ * free, also on failure (NULL when none was allocated).
+ */
+static zl_status frame_submit(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
+                              const zl_state *state, const zl_frame_config *cfg, zl_frame *frame,
+                              void **work, size_t *bytes)
+{
+    zl_status st;
+    zl_style sty;
+    *work = NULL;
+    *bytes = zl_frame_bytes(cfg);
+    if (*bytes == 0) {
+        error("zl_frame_bytes rejects the frame configuration (%ux%u, %u rows a band, "
+              "max_triangles %lu, max_active %lu)",
+              o->width, o->height, o->band_rows, (unsigned long)cfg->max_triangles,
+              (unsigned long)cfg->max_active);
+        return ZL_ERR_SIZE;
+    }
+    *work = malloc(*bytes); /* exactly what zl_frame_bytes asks, nothing more */
+    if (*work == NULL) {
+        error("out of memory for a %lu-byte work buffer", (unsigned long)*bytes);
+        return ZL_ERR_SIZE;
+    }
+    st = zl_frame_begin(frame, cfg, *work, *bytes, o->bg, o->clear_depth);
+    if (st == ZL_OK) {
+        style_of(o, &sty);
+        st = zl_frame_add_mesh_styled(frame, mesh, mvp, state, &sty);
+    }
+    if (st == ZL_OK && o->outline) {
+        zl_outline ol;
+        zl_state ost = *state;
+        outline_of(o, &ol, &ost, &sty);
+        st = zl_frame_add_outlines(frame, mesh, mvp, &ost, &sty, &ol);
+    }
+    if (st != ZL_OK)
+        error("zl_frame setup failed: %s", status_name(st));
+    return st;
+}
+
+/*
+ * Scanline and band mode. The first try sizes the frame for one record per
+ * triangle, enough for most scenes. A clipped triangle can be several pieces
+ * in a row (up to 8), so a scene can need more: the planning of the first
+ * band then fails with ZL_ERR_CAPACITY before any row is drawn or written,
+ * and the frame is sized again from what zl_frame_needs reports and
+ * rendered once more. So these modes render whatever frame mode renders
+ * (below the library's caps of 65535 primitives and 65534 records a row).
+ */
 static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,
                         const zl_state *state, output *out)
 {
     zl_frame_config cfg;
     zl_frame frame;
-    size_t bytes;
-    void *work;
-    int r;
-    zl_status st;
-    /* The sum of triangle_count always suffices for both capacities. */
+    size_t bytes = 0;
+    void *work = NULL;
+    int r = 0, attempt;
     frame_config(&cfg, o, mesh, mesh->triangle_count, mesh->triangle_count);
-    bytes = zl_frame_bytes(&cfg);
-    if (bytes == 0) {
-        error("zl_frame_bytes rejects the frame configuration (%ux%u, %u rows a band)", o->width,
-              o->height, o->band_rows);
-        return 0;
-    }
-    work = malloc(bytes); /* exactly what zl_frame_bytes asks, nothing more */
-    if (work == NULL) {
-        error("out of memory for a %lu-byte work buffer", (unsigned long)bytes);
-        return 0;
-    }
-    st = zl_frame_begin(&frame, &cfg, work, bytes, o->bg, (uint16_t)CLEAR_DEPTH);
-    if (st == ZL_OK) {
-        zl_style sty;
-        style_of(o, &sty);
-        st = zl_frame_add_mesh_styled(&frame, mesh, mvp, state, &sty);
-        if (st == ZL_OK && o->outline) {
-            zl_outline ol;
-            zl_state ost = *state;
-            outline_of(o, &ol, &ost, &sty);
-            st = zl_frame_add_outlines(&frame, mesh, mvp, &ost, &sty, &ol);
-        }
-    }
-    if (st != ZL_OK) {
-        error("zl_frame setup failed: %s", status_name(st));
+    for (attempt = 0; attempt < 2; attempt++) {
+        zl_frame_needs_t needs;
         free(work);
-        return 0;
+        if (frame_submit(o, mesh, mvp, state, &cfg, &frame, &work, &bytes) != ZL_OK) {
+            free(work);
+            return 0;
+        }
+        r = zl_frame_render(&frame, band_out, out);
+        if (r != ZL_ERR_CAPACITY || attempt == 1)
+            break;
+        needs = zl_frame_needs(&frame);
+        if (needs.active > 65534u || needs.triangles > 65535u) {
+            error("the scene needs %lu primitives and %lu records a row; zl_frame takes at most "
+                  "65535 and 65534 (--mode frame has no such limit)",
+                  (unsigned long)needs.triangles, (unsigned long)needs.active);
+            free(work);
+            return 0;
+        }
+        if (needs.triangles > cfg.max_triangles)
+            cfg.max_triangles = needs.triangles;
+        if (needs.active > cfg.max_active)
+            cfg.max_active = needs.active;
     }
-    r = (int)zl_frame_render(&frame, band_out, out);
     if (r != 0) {
         if (r != BAND_WRITE_FAILED)
             error("render failed: %s", status_name((zl_status)r));
@@ -1107,14 +1388,15 @@ static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
     }
     if (o->stats) {
         zl_frame_needs_t needs = zl_frame_needs(&frame);
-        zl_frame_config tight;
+        zl_frame_config tight = cfg;
         printf("work buffer: %lu bytes (zl_frame_bytes: %ux%u, %u row%s a band, max_triangles = "
-               "max_active = %u)\n",
+               "%lu, max_active = %lu)\n",
                (unsigned long)bytes, o->width, o->height, o->band_rows,
-               o->band_rows == 1 ? "" : "s", (unsigned)mesh->triangle_count);
-        frame_config(&tight, o, mesh, needs.triangles ? needs.triangles : 1,
-                     needs.active ? needs.active : 1);
-        printf("needs: %lu visible triangles, at most %lu active in a row; sized to that the "
+               o->band_rows == 1 ? "" : "s", (unsigned long)cfg.max_triangles,
+               (unsigned long)cfg.max_active);
+        tight.max_triangles = needs.triangles;
+        tight.max_active = needs.active ? needs.active : 1;
+        printf("needs: %lu visible primitives, at most %lu active in a row; sized to that the "
                "work buffer would be %lu bytes\n",
                (unsigned long)needs.triangles, (unsigned long)needs.active,
                (unsigned long)zl_frame_bytes(&tight));
@@ -1421,6 +1703,7 @@ int main(int argc, char **argv)
     state.color = o.color;
     state.light_on = (uint8_t)(o.light_on && o.shade != SHADE_DEPTH);
     state.ambient = (uint8_t)o.ambient;
+    apply_state_options(&o, &state, NULL);
     if (!normalize_light(o.light, &state.light_dir)) {
         error("--light: bad direction");
         goto done;

@@ -31,8 +31,12 @@ typedef struct {
 /* Clip-space vertex carried through clipping. */
 typedef struct {
     int32_t x, y, z, w; /* Q16.16 */
-    int32_t r, g, b;    /* colour, Q8 */
+    uint16_t r, g, b;   /* colour, Q8: 0 .. 255 * 256 (16 bits keep the struct
+                           at 28 bytes with zd: the clipper's stack) */
+    uint32_t zd;        /* window depth in 1/65536 steps of the exact mapping
+                           (state near_z, far_z), or ZL_ZD_NONE: z / w */
 } zl_cvert;
+#define ZL_ZD_NONE 0xFFFFFFFFu
 
 /* Cached window vertex of scanline mode: 8 bytes. x == ZL_CACHE_COMPLEX marks a
  * vertex outside a clip plane or outside the int16 window range; triangles
@@ -56,7 +60,10 @@ typedef struct {
 /* The window-space polygon of one source triangle. */
 typedef struct {
     zl_wvert v[ZL_MAX_POLY];
-    unsigned n;
+    uint8_t n;
+    uint8_t clipped;    /* made by clipping: its pieces take the original
+                           triangle's planes (zl_tri_orig_planes); n and it
+                           in one byte each, so zl_poly stays 208 bytes */
     zl_rgb flat;        /* lit flat colour */
     uint8_t light;      /* lighting intensity 0..255 (255 with the light off) */
 } zl_poly;
@@ -245,6 +252,7 @@ typedef struct {
     uint32_t hx, hy;     /* W * 2^SUB / 2, H * 2^SUB / 2: the window centre */
     uint32_t pfast;      /* P: positions within [-P, P) need no range checks */
     uint32_t qx, qy;     /* window quotients below these are inside and in range */
+    const zl_state *exact; /* the state when it asks for the exact depth mapping, else NULL */
 } zl_vx;
 int zl_vx_prepare(const zl_source *s, zl_vx *vx);
 void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_vertex *out);
@@ -269,6 +277,19 @@ int zl_tri_polygon_tex(const zl_source *s, const zl_style *sty, uint32_t t, zl_t
  * zl_tri_shade (lighting costs a square root: only for drawn triangles). */
 int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out);
 void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly);
+/* The depth plane (and with `colour` the screen-linear colour planes, times
+ * light / 255) of triangle t of the source as it is before clipping, at the
+ * centre of pixel (ax, ay): Q20 planes in zl_active's scales, computed from
+ * its clip-space vertices by homogeneous 2D interpolation
+ * (2_geometry/zl_clip_planes.c). Returns 0 when there is no such plane
+ * (degenerate), else 1, plus 2 when the colour planes were set (every
+ * vertex in front of the eye). */
+int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, int colour, uint8_t light,
+                       zl_attr *z, zl_attr col[3]);
+/* The original triangle's depth (Q16 of the stored scale, not clamped: it
+ * leaves 0 .. 65535 beyond the near and far planes) at three subpixel
+ * positions; 0 when it has no plane. */
+int zl_tri_orig_depths3(const zl_source *s, uint32_t t, const int32_t x[3], const int32_t y[3], int64_t z[3]);
 /* The light of a state as zl_tri_shade_lit takes it (Q14, clamped, with the
  * front face's sign), once per draw instead of once per triangle. */
 void zl_light_prepare(const zl_state *st, int32_t lq[3]);
@@ -303,6 +324,15 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
 /* zl_tri_row for a triangle set up by zl_tri_setup_ex with the same style. */
 int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_span_state *ss,
                   uint8_t *color_row, uint16_t *depth_row);
+/* Give a set-up fan triangle (a, b, c) of a clipped polygon the depth plane
+ * z (and the colour planes col, when not NULL and g is) of its original
+ * triangle, both at the record's anchor (t->ax, t->row). With `wrap` (rows
+ * drawn by zl_tri_row or the flat span loops, not zl_tri_row_ex) and a
+ * plane within -1 .. 2 depth ranges at a, b, c, its depth range is
+ * inverted (zlo > zhi: span starts are not clamped, see zl_span.h), else
+ * it is the plane's values at a, b, c within 0 .. 65535. */
+void zl_tri_set_planes(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b, const zl_wvert *c,
+                       const zl_attr *z, const zl_attr *col, int wrap);
 /* Does the style need texture planes (a texture or perspective Gouraud)? */
 int zl_style_needs_planes(const zl_style *sty);
 /* zl_tri_classify's bounds and zl_tri_setup_rows' record of a flat triangle
@@ -360,6 +390,9 @@ void zl_fill16(uint16_t *p, uint16_t v, uint32_t n);
 /* Polygon offset of a triangle, Q20 depth steps: factor * max(|dz/dx|,
  * |dz/dy|) + units; 0 when both are 0. */
 int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_style *sty);
+/* zl_tri_offset from a depth plane's own gradients (a clipped piece with
+ * the original triangle's plane). */
+int64_t zl_tri_offset_plane(const zl_attr *z, const zl_style *sty);
 /* Move a set-up triangle's depth plane by an offset (Q20 steps). */
 void zl_tri_apply_offset(zl_active *t, int64_t offset);
 /* Plot the current row of a line or point record into the row buffers and
@@ -407,6 +440,11 @@ int zl_lines_record(const zl_source *s, const zl_lines *l, const zl_style *sty, 
  * Returns the number of pieces in *count on k == 0 and sets up piece k into
  * t (and g): 1 if it has pixels. */
 unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly);
+/* A set-up fan triangle (a, b, c) of the clipped polygon of triangle tri:
+ * the depth and screen-linear colour planes of the original triangle
+ * instead of its own (zl_tri_orig_planes, zl_tri_set_planes). */
+void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, const zl_wvert *a,
+                       const zl_wvert *b, const zl_wvert *c, zl_active *t, zl_gouraud *g);
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
                  zl_active *t, zl_gouraud *g, zl_texplanes *tp);
 

@@ -19,6 +19,8 @@ void zl_state_default(zl_state *s)
     s->light_dir.x = 0;
     s->light_dir.y = 0;
     s->light_dir.z = ZL_FX_ONE;
+    s->near_z = 0;
+    s->far_z = 0;
 }
 
 zl_status zl_state_check(const zl_state *s)
@@ -34,6 +36,8 @@ zl_status zl_state_check(const zl_state *s)
     if (s->light_on && (s->light_dir.x < -ZL_FX_ONE || s->light_dir.x > ZL_FX_ONE ||
                         s->light_dir.y < -ZL_FX_ONE || s->light_dir.y > ZL_FX_ONE ||
                         s->light_dir.z < -ZL_FX_ONE || s->light_dir.z > ZL_FX_ONE))
+        return ZL_ERR_RANGE;
+    if ((s->near_z != 0 || s->far_z != 0) && !(s->near_z > 0 && s->far_z > s->near_z))
         return ZL_ERR_RANGE;
     return ZL_OK;
 }

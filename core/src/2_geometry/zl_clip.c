@@ -65,9 +65,11 @@ static int64_t intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, i
     res->y = lerp(in->y, out->y, t);
     res->z = lerp(in->z, out->z, t);
     res->w = lerp(in->w, out->w, t);
-    res->r = lerp(in->r, out->r, t);
-    res->g = lerp(in->g, out->g, t);
-    res->b = lerp(in->b, out->b, t);
+    /* between two colours: stays in 0 .. 255 * 256 */
+    res->r = (uint16_t)lerp(in->r, out->r, t);
+    res->g = (uint16_t)lerp(in->g, out->g, t);
+    res->b = (uint16_t)lerp(in->b, out->b, t);
+    res->zd = ZL_ZD_NONE; /* a vertex made here: depth z / w */
     /* Put the new vertex exactly on the planes whose equation is simple. */
     if (plane == PLANE_NEAR)
         res->z = 0;
@@ -113,6 +115,7 @@ static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *
         w->b = (uint16_t)color_q8(s->mesh, idx[k], 2);
     }
     out->n = 3;
+    out->clipped = 0;
     return 1;
 }
 
@@ -142,7 +145,8 @@ static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out
         return 0;
     for (k = 0; k < n; k++)
         zl_project(s, &src[k], &out->v[k]);
-    out->n = n;
+    out->n = (uint8_t)n; /* at most ZL_MAX_POLY */
+    out->clipped = (uint8_t)any_out; /* the 7 plane bits: non-zero when clipped */
     return 1;
 }
 
@@ -235,7 +239,8 @@ static ZL_NOINLINE int tex_clipped(const zl_source *s, const zl_style *sty, cons
         out->v[k] = src[k].v;
         out->w[k] = w_of(s, src[k].c.w);
     }
-    out->p.n = n;
+    out->p.n = (uint8_t)n;
+    out->p.clipped = 1;
     return 1;
 }
 

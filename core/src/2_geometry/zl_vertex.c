@@ -9,6 +9,83 @@
 
 #include "zl_geometry.h"
 
+/* Bit length of v (0 for 0): CLZ where the compiler has it. */
+static ZL_ALWAYS_INLINE unsigned bits_u32(uint32_t v)
+{
+#if defined(__GNUC__)
+    return v == 0 ? 0u : 32u - (unsigned)__builtin_clz(v);
+#else
+    unsigned n = 0;
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/* The low word of v >> s for 0 <= s <= 31, v >> s below 2^32: 32-bit
+ * operations only (a variable 64-bit shift is a library call on some
+ * targets). */
+static ZL_ALWAYS_INLINE uint32_t shr_low(uint64_t v, unsigned s)
+{
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
+    return s == 0 ? lo : (lo >> s) | (hi << (32u - s));
+}
+
+/*
+ * The exact pseudodepth (zline.h, Pseudodepth) of eye distance d = dq / 2^32
+ * (dq the clip w's 64-bit sum, Q32, before rounding; below 2^47) for near
+ * n = N / 2^16 and far f = F / 2^16, in 1/65536 steps:
+ *     round(65535 * 2^16 * f (d - n) / ((f - n) d)) = round((2^32 - 2^16) X / Y),
+ * clamped to 0 .. 65535 * 2^16, with X = F (dq - nq), Y = (F - N) dq.
+ * dq is brought below 2^32 by a right shift s <= 15 (relative error below
+ * 2^-31), nq = N 2^16 by the same shift, exactly (16 - s >= 1); X and Y
+ * (below 2^63) are brought below 2^32 together (X <= Y); one 64/32 division
+ * gives the quotient. The truncations move the result by less than
+ * 4 f / (f - n) units of 2^-16 step: 1/8000 step when f >= 2n.
+ */
+static uint32_t depth_exact(uint64_t dq, uint32_t n, uint32_t f)
+{
+    uint32_t d, nq, x, y;
+    uint64_t xx, yy;
+    unsigned s;
+    if (dq <= (uint64_t)n << 16)
+        return 0;
+    if (dq >= (uint64_t)f << 16)
+        return 0xFFFF0000u;
+    s = bits_u32((uint32_t)(dq >> 32)); /* 0 .. 15 */
+    d = shr_low(dq, s);
+    nq = n << (16u - s); /* exact: N 2^16 >> s < d < 2^32 */
+    xx = (uint64_t)f * (d - nq);
+    yy = (uint64_t)(f - n) * d;
+    s = bits_u32((uint32_t)(yy >> 32)); /* 0 .. 31: yy < 2^63 */
+    x = shr_low(xx, s);
+    y = shr_low(yy, s); /* >= 2^31 when shifted, >= 1 always (f > n, d > nq) */
+    if (x > y)
+        x = y;
+    /* x (2^32 - 2^16) + y/2 < 2^64 for x <= y < 2^32: the quotient fits 32 bits */
+    return zl_udiv64_32(((uint64_t)x << 32) - ((uint64_t)x << 16) + (y >> 1), y, NULL);
+}
+
+/* The exact mapping's depth of a vertex whose clip w sum (Q32) is dq. */
+static uint32_t depth_of_wsum(const zl_state *st, int64_t dq)
+{
+    return depth_exact(dq > 0 ? (uint64_t)dq : 0u, (uint32_t)st->near_z, (uint32_t)st->far_z);
+}
+
+/* The same for the model position p under s's matrix: w's sum as
+ * zl_transform_point forms it, not rounded (it fits 64 bits when the
+ * transform succeeded). Out of line: its frame (and the division's) is not
+ * on top of the transform's in zl_vertex_clip, the clipper's deepest stack
+ * path. */
+static ZL_NOINLINE uint32_t vertex_exact_depth(const zl_source *s, const zl_fixed *p)
+{
+    const zl_fixed *m = &s->mvp->m[12];
+    return depth_of_wsum(s->state, (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2] +
+                                       (int64_t)m[3] * ZL_FX_ONE);
+}
+
 int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
 {
     const zl_fixed *p = &s->mesh->positions[idx * 3u];
@@ -24,15 +101,17 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
         out->y = c.y;
         out->z = c.z;
         out->w = c.w;
+        out->zd = s->state != NULL && s->state->far_z != 0 ? vertex_exact_depth(s, p) : ZL_ZD_NONE;
     } else {
         out->x = v.x;
         out->y = v.y;
         out->z = v.z;
         out->w = ZL_FX_ONE;
+        out->zd = ZL_ZD_NONE;
     }
-    out->r = color_q8(s->mesh, idx, 0);
-    out->g = color_q8(s->mesh, idx, 1);
-    out->b = color_q8(s->mesh, idx, 2);
+    out->r = (uint16_t)color_q8(s->mesh, idx, 0); /* 0 .. 255 * 256 */
+    out->g = (uint16_t)color_q8(s->mesh, idx, 1);
+    out->b = (uint16_t)color_q8(s->mesh, idx, 2);
     return 1;
 }
 
@@ -111,7 +190,7 @@ void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out)
         out->y = round_div_w(((int64_t)w - v->y) * s->height * (ZL_SUB_ONE / 2), w);
         if (z > w)
             z = w;
-        out->z = depth_q16((uint32_t)z, (uint32_t)w);
+        out->z = v->zd != ZL_ZD_NONE ? v->zd : depth_q16((uint32_t)z, (uint32_t)w);
     } else {
         /* Pixel space: x, y are Q16.16 pixels, z is depth 0..1 in Q16.16. */
         out->x = (int32_t)zl_floor_shift64((int64_t)v->x + (1 << (15 - ZL_SUB_BITS)), 16 - ZL_SUB_BITS);
@@ -197,6 +276,7 @@ static int vx_prepare(const zl_source *s, vx_setup *vs)
     vs->hx = s->width * (uint32_t)(ZL_SUB_ONE / 2);
     vs->hy = s->height * (uint32_t)(ZL_SUB_ONE / 2);
     vs->pfast = fast_bound(vs);
+    vs->exact = s->state != NULL && s->state->far_z != 0 ? s->state : NULL;
     /* See vx_fast: x inside its planes and window x in [INT16_MIN + 2,
      * INT16_MAX] when q < hx + G 2^SUB and q < 32767 - hx; y likewise with
      * [INT16_MIN, INT16_MAX]. */
@@ -267,7 +347,14 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
         return c;
     c.x = (int16_t)wx;
     c.y = (int16_t)wy;
-    c.z = depth_q16((uint32_t)z, (uint32_t)w);
+    if (vs->exact != NULL) {
+        const zl_fixed *m = &vs->m[12];
+        /* bias[3] holds 2^15 for the rounding: the sum itself is without it */
+        c.z = depth_of_wsum(vs->exact, vs->bias[3] - 32768 + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] +
+                                           (int64_t)m[2] * p[2]);
+    } else {
+        c.z = depth_q16((uint32_t)z, (uint32_t)w);
+    }
     return c;
 }
 
@@ -287,15 +374,17 @@ static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_
  * which is the pair of x planes multiplied by 2^SUB / 2 (W |x| <= (W + 2G) w).
  * The window coordinate h -+ q is then in range when q < qx (qy).
  */
-static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c)
+static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c, int exact)
 {
     uint32_t pf = vs->pfast, ax, ay, q;
     uint64_t n;
     int32_t x, y, z, w, wx;
+    int64_t wsum;
     if ((((uint32_t)p[0] + pf) | ((uint32_t)p[1] + pf) | ((uint32_t)p[2] + pf)) >= 2u * pf)
         return 0;
     /* Each row where it is needed: the compiler keeps the order. */
-    w = vx_row_fast(vs, 3, p);
+    wsum = vs->bias[3] + (int64_t)vs->m[12] * p[0] + (int64_t)vs->m[13] * p[1] + (int64_t)vs->m[14] * p[2];
+    w = (int32_t)zl_floor_shift64(wsum, 16); /* vx_row_fast of row 3 */
     z = vx_row_fast(vs, 2, p);
     if (w < 1 || (uint32_t)z > (uint32_t)w) {
         c->x = ZL_CACHE_COMPLEX; /* outside the w, near or far plane */
@@ -323,7 +412,8 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
         return 0;
     c->x = (int16_t)wx;
     c->y = (int16_t)(y > 0 ? (int32_t)vs->hy - (int32_t)q : (int32_t)(vs->hy + q));
-    c->z = depth_q16((uint32_t)z, (uint32_t)w);
+    /* the exact mapping from w's sum without bias[3]'s 2^15 of rounding */
+    c->z = exact ? depth_of_wsum(vs->exact, wsum - 32768) : depth_q16((uint32_t)z, (uint32_t)w);
     return 1;
 }
 
@@ -353,7 +443,7 @@ zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
     {
         const zl_fixed *p = &s->mesh->positions[idx * 3u];
         zl_cached_vertex c;
-        if (!vx_fast(&vs, p, &c))
+        if (!vx_fast(&vs, p, &c, vs.exact != NULL))
             c = vx_cache(&vs, p);
         return c;
     }
@@ -378,8 +468,19 @@ zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_
             *c = bad;
         return ZL_ERR_RANGE;
     }
+    /* Two loops: vx_fast inlined once per depth mapping, no test a vertex. */
+    if (vs.exact != NULL) {
+        for (; c != end; c++, p += 3) {
+            if (vx_fast(&vs, p, c, 1))
+                continue;
+            *c = vx_cache(&vs, p);
+            if (c->x == ZL_CACHE_INVALID)
+                st = ZL_ERR_RANGE;
+        }
+        return st;
+    }
     for (; c != end; c++, p += 3) {
-        if (vx_fast(&vs, p, c))
+        if (vx_fast(&vs, p, c, 0))
             continue;
         *c = vx_cache(&vs, p);
         if (c->x == ZL_CACHE_INVALID)

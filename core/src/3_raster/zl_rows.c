@@ -14,9 +14,7 @@
  * [zlo / 4, zhi / 4]), so it is 32-bit work whenever v is in range. */
 static ZL_ALWAYS_INLINE uint32_t depth_start_shifted(int64_t v, uint32_t lo14, uint32_t hi14)
 {
-    int64_t w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
-    uint32_t z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
-    return (z < lo14 ? lo14 : z) + (1u << 13);
+    return zl_depth_start_q14(zl_floor_shift64(v, ZL_ATTR_FRAC - 14), lo14, hi14);
 }
 
 /* The depth stepper (Q14, rounding half added) at column x of the current

@@ -314,6 +314,55 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
         tex_setup(tp, g, sty, v, poly, &pf, st);
 }
 
+/* Q16 value (stored scale) of a Q20 plane anchored at the centre of pixel
+ * (ax, ay), at subpixel position (x, y): whole pixels, then the 1/16
+ * remainder, so that no product exceeds 2^61 (|dx|, |dy| <= 2^43, offsets
+ * within the guard band). */
+static int64_t plane_at(const zl_attr *p, int32_t ax, int32_t ay, int32_t x, int32_t y)
+{
+    int64_t ox = (int64_t)x - ((int64_t)ax * ZL_SUB_ONE + ZL_SUB_HALF);
+    int64_t oy = (int64_t)y - ((int64_t)ay * ZL_SUB_ONE + ZL_SUB_HALF);
+    int64_t v = p->row + zl_floor_shift64(ox, ZL_SUB_BITS) * p->dx + zl_floor_shift64(oy, ZL_SUB_BITS) * p->dy;
+    v += zl_floor_shift64((ox & (ZL_SUB_ONE - 1)) * p->dx + (oy & (ZL_SUB_ONE - 1)) * p->dy, ZL_SUB_BITS);
+    return zl_floor_shift64(v, ZL_ATTR_FRAC - 16);
+}
+
+void zl_tri_set_planes(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b, const zl_wvert *c,
+                       const zl_attr *z, const zl_attr *col, int wrap)
+{
+    const int64_t top = (int64_t)65535 << 16;
+    const zl_wvert *v[3];
+    int64_t lo, hi;
+    int k;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    t->z = *z;
+    t->dz14 = step32(z->dx, ZL_ATTR_FRAC - 14);
+    /* Every covered centre is a convex combination of the three vertices,
+     * so the plane there lies within its values at them. */
+    lo = hi = plane_at(z, t->ax, t->row, v[0]->x, v[0]->y);
+    for (k = 1; k < 3; k++) {
+        int64_t e = plane_at(z, t->ax, t->row, v[k]->x, v[k]->y);
+        lo = e < lo ? e : lo;
+        hi = e > hi ? e : hi;
+    }
+    if (wrap && lo > -top && hi < 2 * top) {
+        /* the inverted range: no clamp at span starts (zl_depth_start_q14);
+         * the stepper stays within +-2^31 (Q14) */
+        t->zlo = 0xFFFFFFFFu;
+        t->zhi = 0;
+    } else {
+        t->zlo = (uint32_t)clamp64(lo - 1, 0, top);
+        t->zhi = (uint32_t)clamp64(hi + 1, 0, top);
+    }
+    if (g != NULL && col != NULL) {
+        g->c[0] = col[0];
+        g->c[1] = col[1];
+        g->c[2] = col[2];
+    }
+}
+
 /* ------------------------------------------------------ polygon offset */
 
 int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, const zl_style *sty)
@@ -347,11 +396,28 @@ int64_t zl_tri_offset(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, c
     return off;
 }
 
+int64_t zl_tri_offset_plane(const zl_attr *z, const zl_style *sty)
+{
+    const int64_t limit = (int64_t)65535 << ZL_ATTR_FRAC; /* as zl_tri_offset */
+    int64_t off, mx, my;
+    if (sty == NULL || (sty->offset_factor == 0 && sty->offset_units == 0))
+        return 0;
+    off = (int64_t)sty->offset_units * (1 << (ZL_ATTR_FRAC - 16));
+    mx = z->dx < 0 ? -z->dx : z->dx;
+    my = z->dy < 0 ? -z->dy : z->dy;
+    mx = mx > my ? mx : my;
+    mx = mx > limit ? limit : mx;
+    /* |factor| <= 2^24 and mx <= 2^36: the product fits 64 bits. */
+    return off + zl_floor_shift64((int64_t)sty->offset_factor * mx, 16);
+}
+
 void zl_tri_apply_offset(zl_active *t, int64_t offset)
 {
     const int64_t top = (int64_t)65535 << 16;
     int64_t o16 = zl_floor_shift64(offset, ZL_ATTR_FRAC - 16);
     t->z.row += offset;
+    if (t->zlo > t->zhi)
+        return; /* a clipped piece without a clamp range (zl_tri_set_planes) */
     t->zlo = (uint32_t)clamp64((int64_t)t->zlo + o16, 0, top);
     t->zhi = (uint32_t)clamp64((int64_t)t->zhi + o16, 0, top);
 }

@@ -220,6 +220,13 @@ static inline void span_flat_exact(unsigned func, uint16_t *crow, uint16_t *zrow
         flat_pixel(func, crow + n - 1, zrow + n - 1, (z + (uint32_t)(n - 1) * dz) >> 14, pixel);
 }
 
+uint32_t zl_depth_start_clamp(int64_t w, uint32_t lo14, uint32_t hi14)
+{
+    if (lo14 > hi14) /* a clipped piece: within +-2^31 by zl_tri_set_planes' bound */
+        return (uint32_t)w + (1u << 13); /* modulo 2^32 */
+    return (w < (int64_t)lo14 ? lo14 : hi14) + (1u << 13);
+}
+
 void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                       uint32_t dz, const uint8_t *pix)
 {

@@ -148,6 +148,22 @@ static ZL_ALWAYS_INLINE void tiny_fill(const zl_span_state *ss, unsigned func, i
     }
 }
 
+/* The start of a span's depth stepper (Q14, rounding half added) from the
+ * plane's value w (Q14) at its first pixel, clamped to the record's range
+ * [lo14, hi14] (zlo / 4, zhi / 4). An inverted range (lo14 > hi14) marks a
+ * piece of a clipped triangle, whose depth plane is the original
+ * triangle's (zl_tri_set_planes): there w may leave the depth range at a
+ * pixel the snapped polygon covers just beyond the near or far plane, and
+ * is kept (wrapping, |w| < 2^31) so the span's next pixels stay on the
+ * plane; depth_of clamps each pixel. In range, the common case, w itself. */
+uint32_t zl_depth_start_clamp(int64_t w, uint32_t lo14, uint32_t hi14);
+static ZL_ALWAYS_INLINE uint32_t zl_depth_start_q14(int64_t w, uint32_t lo14, uint32_t hi14)
+{
+    if (w >= (int64_t)lo14 && w <= (int64_t)hi14)
+        return (uint32_t)w + (1u << 13);
+    return zl_depth_start_clamp(w, lo14, hi14);
+}
+
 /* Write one pixel's bytes, keeping the masked-off bits of the old pixel.
  * Byte by byte, so RGB565_BE rows (a byte stream) may have any alignment;
  * the fast span loop below uses 16-bit stores when it can. */

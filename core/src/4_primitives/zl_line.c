@@ -402,11 +402,11 @@ unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, co
     int mode;
     (void)tri;
     if (!uses_modes(sty))
-        return poly->n - 2;
+        return (unsigned)poly->n - 2u;
     mode = tri_mode(s, sty, poly, &plane);
     if (mode < 0)
         return 0;
-    return mode == ZL_POLY_FILL ? poly->n - 2 : 3u;
+    return mode == ZL_POLY_FILL ? (unsigned)poly->n - 2u : 3u;
 }
 
 /* The flat colour of a triangle: toon band or its lit colour. */
@@ -417,6 +417,21 @@ static zl_rgb flat_of(const zl_style *sty, const zl_poly *poly)
         return sty->toon_colors[band];
     }
     return poly->flat;
+}
+
+/* A piece of a clipped polygon, set up from its own (clipped, snapped)
+ * vertices: give it the depth and screen-linear colour planes of the
+ * original triangle instead (zline.h, Clipping). Perspective colour and
+ * texture planes stay the piece's own. Out of line: its frame is not on the
+ * stack of the unclipped path. */
+ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly,
+                                   const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, zl_active *t, zl_gouraud *g)
+{
+    zl_attr z, col[3];
+    int colour = g != NULL && s->state->shading == ZL_SHADE_GOURAUD && !(sty != NULL && sty->persp_gouraud);
+    int got = zl_tri_orig_planes(s, tri, t->ax, t->row, colour, poly->light, &z, col);
+    if (got != 0)
+        zl_tri_set_planes(t, g, a, b, c, &z, (got & 2) ? col : NULL, !zl_style_needs_planes(sty));
 }
 
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
@@ -438,7 +453,12 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
         t->rgb[0] = flat.r;
         t->rgb[1] = flat.g;
         t->rgb[2] = flat.b;
-        off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);
+        if (poly->clipped) {
+            zl_tri_orig_piece(s, sty, tri, poly, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], t, g);
+            off = zl_tri_offset_plane(&t->z, sty);
+        } else {
+            off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);
+        }
         if (off != 0)
             zl_tri_apply_offset(t, off);
         return 1;

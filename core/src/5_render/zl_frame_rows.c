@@ -268,8 +268,7 @@ static ZL_ALWAYS_INLINE void span_565(const zl_active *a, const zl_span_state *s
     else
         v = plane_wide(a, x0);
     w = zl_floor_shift64(v, ZL_ATTR_FRAC - 14);
-    z = w < 0 ? 0u : (w > (int64_t)hi14 ? hi14 : (uint32_t)w);
-    z = (z < lo14 ? lo14 : z) + (1u << 13);
+    z = zl_depth_start_q14(w, lo14, hi14);
     if (n > SHORT_SPAN) {
         uint8_t pix[3];
         memcpy(pix, &pixel, 2); /* pack_color's native RGB565 */

@@ -91,7 +91,34 @@ static int cast(const zl_vis_rtri *r, int64_t px, int64_t py, uint64_t *z)
         zmin = r->z[2];
     n = (uint64_t)w0 * (r->z[0] - zmin) + (uint64_t)w1 * (r->z[1] - zmin) + (uint64_t)w2 * (r->z[2] - zmin);
     *z = zmin + n / (uint64_t)area;
+    if (r->wide) { /* back to the zl_wvert scale, clamped as the stored depth is */
+        int64_t d = ((int64_t)*z - ((int64_t)1 << 31)) * 256;
+        *z = (uint64_t)(d < 0 ? 0 : (d > (int64_t)65535 << 16 ? (int64_t)65535 << 16 : d));
+    }
     return 1;
+}
+
+/* A piece of a clipped triangle casts against the original triangle's
+ * plane (as the z-buffer draws it): its vertices' depths from
+ * zl_tri_orig_depths3, unclamped, in 1/256 step biased by 2^31 (so
+ * -2^23 .. 2^23 steps fit; beyond, the clamped polygon depths stay). */
+static ZL_NOINLINE void wide_depths(zl_vis_rtri *r, const zl_source *src, uint32_t t)
+{
+    int32_t x[3], y[3];
+    int64_t z[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        x[k] = (int32_t)(r->x[k] / 2);
+        y[k] = (int32_t)(r->y[k] / 2);
+    }
+    if (!zl_tri_orig_depths3(src, t, x, y, z))
+        return;
+    for (k = 0; k < 3; k++)
+        if (z[k] < -((int64_t)1 << 39) || z[k] >= ((int64_t)1 << 39))
+            return;
+    for (k = 0; k < 3; k++)
+        r->z[k] = (uint32_t)(zl_floor_shift64(z[k], 8) + ((int64_t)1 << 31));
+    r->wide = 1;
 }
 
 int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user)
@@ -137,6 +164,8 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
                 if (!zl_vis_rtri_init(r, &poly.v[0], &poly.v[k], &poly.v[k + 1], &v->meshes[mi].state,
                                       v->cfg.width, v->cfg.height, &f))
                     continue;
+                if (poly.clipped)
+                    wide_depths(r, &src, t);
                 r->id = v->visible[b];
                 r->rgb[0] = poly.flat.r;
                 r->rgb[1] = poly.flat.g;

@@ -50,6 +50,7 @@ int zl_vis_rtri_init(zl_vis_rtri *r, const zl_wvert *a, const zl_wvert *b, const
         }
     }
     r->area = area;
+    r->wide = 0;
     for (k = 0; k < 3; k++)
         r->z[k] = v[k]->z;
     r->rgb[0] = 0;

@@ -21,11 +21,14 @@ struct zl_vis_mesh {
 typedef struct {
     int64_t x[3], y[3]; /* vertices in half subpixels (2 * snapped), area > 0 order */
     int64_t area;       /* doubled signed area in those units, > 0 */
-    uint32_t z[3];      /* window depth, zl_wvert scale */
+    uint32_t z[3];      /* window depth, zl_wvert scale; with wide, 2^31 + 256 steps */
     int32_t px0, px1;   /* candidate columns px0 .. px1 - 1 */
     int16_t first, end; /* candidate rows first .. end - 1 */
     uint16_t id;
     uint8_t rgb[3];
+    uint8_t wide;       /* a piece of a clipped triangle: z is the original
+                           triangle's depth, which may leave 0 .. 65535 (in
+                           the tail padding: the record does not grow) */
 } zl_vis_rtri;
 
 /* AET: one entry of the active edge list. */
@@ -70,6 +73,10 @@ static inline int64_t zl_vis_depth_at(const zl_active *t, int32_t x)
 {
     int64_t v = t->z.row + (int64_t)(x - t->ax) * t->z.dx;
     int64_t lo = (int64_t)t->zlo * (1 << (ZL_ATTR_FRAC - 16)), hi = (int64_t)t->zhi * (1 << (ZL_ATTR_FRAC - 16));
+    if (lo > hi) { /* a piece of a clipped triangle (zl_tri_set_planes): the stored range */
+        lo = 0;
+        hi = (int64_t)65535 << ZL_ATTR_FRAC;
+    }
     return v < lo ? lo : (v > hi ? hi : v);
 }
 

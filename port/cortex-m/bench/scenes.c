@@ -53,10 +53,18 @@ static int camera_view(zl_mat4 *mvp, zl_mat4 *view, zl_vec3 eye)
     return 0;
 }
 
-static int camera(zl_mat4 *mvp, zl_vec3 eye)
+/* The perspective camera; with exact != 0 the state gets its near and far
+ * for the exact depth mapping (zl_state near_z, far_z). */
+static int camera(zl_mat4 *mvp, zl_state *state, zl_vec3 eye, int exact)
 {
     zl_mat4 view;
-    return camera_view(mvp, &view, eye);
+    if (camera_view(mvp, &view, eye) != 0)
+        return -1;
+    if (exact) {
+        state->near_z = ZL_FX_ONE / 10;
+        state->far_z = ZL_FX_INT(100);
+    }
+    return 0;
 }
 
 static uint8_t bunny_lit[3 * BUNNY_VERTEX_COUNT];
@@ -168,10 +176,11 @@ int scene_make(scene *s, int which)
     memset(s, 0, sizeof *s);
     zl_state_default(&s->state);
     switch (which) {
-    case SCENE_BUNNY: {
-        /* exactly tools/bench/bench_scene.c */
+    case SCENE_BUNNY:
+    case SCENE_BUNNY_EXACT: {
+        /* exactly tools/bench/bench_scene.c (bunny_exact: and the exact depth mapping) */
         zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2};
-        s->name = "bunny";
+        s->name = which == SCENE_BUNNY ? "bunny" : "bunny_exact";
         s->mesh = bunny_mesh;
         s->state.cull = ZL_CULL_BACK;
         s->state.light_on = 1;
@@ -182,7 +191,7 @@ int scene_make(scene *s, int which)
         s->state.light_dir.x = 24576;
         s->state.light_dir.y = 32768;
         s->state.light_dir.z = 49152;
-        return camera(&s->mvp, eye);
+        return camera(&s->mvp, &s->state, eye, which == SCENE_BUNNY_EXACT);
     }
     case SCENE_FILL:
     case SCENE_FILL_GOURAUD:
@@ -217,7 +226,7 @@ int scene_make(scene *s, int which)
         s->mesh = tetra_mesh;
         s->state.shading = ZL_SHADE_GOURAUD;
         s->gouraud = 1;
-        return camera(&s->mvp, eye);
+        return camera(&s->mvp, &s->state, eye, 1); /* clipped: the exact mapping's clip path */
     }
     case SCENE_TEXTURED:
         return textured_scene(s);

@@ -18,6 +18,8 @@
  *                specular (exponent 24) and a blue fill light, both in eye
  *                space (brought to model space by the view matrix), the lit
  *                vertex colours Gouraud-interpolated
+ *   bunny_exact  the benchmark scene with zl_state near_z = 0.1, far_z = 100:
+ *                the exact depth mapping (zline.h, Pseudodepth), its cost
  *   tetra        (golden test only) a vertex-coloured model close to the
  *                camera: near-plane clipping and Gouraud shading
  *   textured     (golden test only, issue 15) floor.obj (texture coordinates
@@ -38,8 +40,10 @@
 #define SCENE_W 320
 #define SCENE_H 240
 
-enum { SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_TETRA, SCENE_BUNNY_SMOOTH, SCENE_TEXTURED,
-       SCENE_COUNT };
+enum {
+    SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_BUNNY_EXACT, SCENE_TETRA, SCENE_BUNNY_SMOOTH,
+    SCENE_TEXTURED, SCENE_COUNT
+};
 
 /* The most meshes drawn after the first one (styled scenes). */
 #define SCENE_MAX_EXTRA 2
