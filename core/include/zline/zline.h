@@ -687,10 +687,10 @@ typedef struct {
 #if ZL_DRAW_CACHE_SLOTS > 0
     /* Without that cache, zl_draw_mesh keeps the window vertices of recent
      * triangles here (ZL_DRAW_CACHE_SLOTS in zl_config.h: 10 bytes a slot,
-     * 10240 bytes by default, plus 136 for the transform set-up: 10376
+     * 10240 bytes by default, plus 144 for the transform set-up: 10384
      * bytes; the same pixels either way). Library scratch,
      * rewritten by every draw: do not touch. */
-    int64_t draw_setup[17]; /* the draw's transform set-up (off the stack) */
+    int64_t draw_setup[18]; /* the draw's transform set-up (off the stack) */
     uint32_t draw_cache[2 * ZL_DRAW_CACHE_SLOTS];
     uint16_t draw_cache_tag[ZL_DRAW_CACHE_SLOTS];
 #endif

@@ -427,7 +427,7 @@ void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_v
     const zl_fixed *p = &s->mesh->positions[idx * 3u];
     if (s->mvp == NULL)
         *out = cache_vertex_generic(s, idx);
-    else if (!vx_fast(vx, p, out))
+    else if (!vx_fast(vx, p, out, vx->exact != NULL))
         *out = vx_cache(vx, p);
 }
 
