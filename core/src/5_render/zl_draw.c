@@ -269,10 +269,15 @@ static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl
                                                  uint32_t t, int cull_sign, int tiny, const small_cache *sc)
 {
     int32_t lq[3];
-    const uint16_t *idx = src->mesh->indices + t * 3u;
+    const uint16_t *idx;
     const zl_cached_vertex *cache = src->cache;
     uint32_t n = src->mesh->triangle_count, flip = cull_sign < 0 ? 0xFFFFFFFFu : 0u;
     (void)sc;
+    /* A mesh without triangles may have no index array: no pointer
+     * arithmetic on NULL, even by zero (undefined; clang's UBSan says so). */
+    if (t >= n)
+        return n;
+    idx = src->mesh->indices + t * 3u;
     zl_light_prepare(&ctx->state, lq);
     for (; t < n; t++, idx += 3) {
         const zl_cached_vertex *c[3];
