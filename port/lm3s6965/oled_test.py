@@ -111,7 +111,7 @@ def compare(frame, got, want):
 
 
 class Qmp:
-    def __init__(self, path, deadline):
+    def __init__(self, path, deadline, proc):
         self.deadline = deadline
         while True:
             try:
@@ -120,6 +120,12 @@ class Qmp:
                 break
             except OSError:
                 self.sock.close()
+                if proc.poll() is not None:
+                    # The firmware stopped before the socket was up (a
+                    # start-up error it printed): say so now, not at the deadline.
+                    out = proc.stdout.read().decode("utf-8", "replace").strip()
+                    raise Broken("QEMU exited (status %d) before its QMP socket was up; the firmware said: %s"
+                                 % (proc.returncode, out or "nothing"))
                 if time.monotonic() > deadline:
                     raise Broken("cannot connect to QEMU's QMP socket %s" % path)
                 time.sleep(0.05)
@@ -214,7 +220,7 @@ def run_qemu(args, deadline, sock_path):
     with open(stderr_path, "wb") as err:
         proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=err)
         try:
-            qmp = Qmp(sock_path, deadline)
+            qmp = Qmp(sock_path, deadline, proc)
             lines = Lines(proc.stdout, deadline, log)
             while True:
                 line = lines.next()
