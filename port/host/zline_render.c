@@ -483,10 +483,14 @@ static int parse_state_option(const char *name, const char *val, int argc, char 
         strcmp(name, "--polygon-offset") != 0 && strcmp(name, "--polygon-mode") != 0 &&
         strcmp(name, "--persp-color") != 0)
         return 0;
-    if (!takes_value && val != NULL)
-        return usage_error("%s takes no value", name);
-    if (takes_value && val == NULL) {
-        if (*i + 1 >= argc)
+    if (!takes_value) {
+        if (val != NULL)
+            return usage_error("%s takes no value", name);
+        o->persp_color = 1;
+        return 1;
+    }
+    if (val == NULL) {
+        if (*i + 1 >= argc || argv[*i + 1] == NULL)
             return usage_error("%s needs a value", name);
         val = argv[++*i];
     }
@@ -1249,9 +1253,8 @@ static int render_frame(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
      * every band of zl_frame does. */
     if (st == ZL_OK)
         st = zl_clear(&ctx, o->bg, o->clear_depth);
-    if (st == ZL_OK)
-        ctx.state = *state;
     if (st == ZL_OK) {
+        ctx.state = *state;
         style_of(o, &ctx.style);
         st = zl_draw_mesh(&ctx, mesh, mvp);
     }
