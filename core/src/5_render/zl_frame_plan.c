@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "zl_frame_internal.h"
+#include "../3_raster/zl_raster.h"
 
 static void fill_cache(zl_frame *f)
 {
@@ -98,13 +99,6 @@ static ZL_NOINLINE void classify_pieces(zl_frame *f, plan_pass *p, const zl_fram
     }
 }
 
-/* The index of the first row (or column) whose centre is at or after
- * subpixel coordinate v (zl_raster.c's first_centre_at_or_after). */
-static int32_t centre_at_or_after(int32_t v)
-{
-    return zl_floor_shift32(v - ZL_SUB_HALF + ZL_SUB_ONE - 1, ZL_SUB_BITS);
-}
-
 /* zl_tri_classify of a triangle whose three vertices are cached inside the
  * clip volume (then its polygon is the triangle itself, one piece): the
  * same area test, row range and column test, on the int16 coordinates
@@ -127,8 +121,8 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
         ymin = c->y;
     if (c->y > ymax)
         ymax = c->y;
-    *first = centre_at_or_after(ymin);
-    *end = centre_at_or_after(ymax);
+    *first = first_centre_at_or_after(ymin);
+    *end = first_centre_at_or_after(ymax);
     if (*first < 0)
         *first = 0;
     if (*end > height)
@@ -143,7 +137,7 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
         xmin = c->x;
     if (c->x > xmax)
         xmax = c->x;
-    return centre_at_or_after(xmin) < width && centre_at_or_after(xmax) > 0;
+    return first_centre_at_or_after(xmin) < width && first_centre_at_or_after(xmax) > 0;
 }
 
 /* Filled triangle t that needs clipping (or is dropped): the row range of
