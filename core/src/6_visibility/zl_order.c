@@ -2,11 +2,10 @@
  * Stage 6, visibility: the painter's order of a mesh's triangles as an
  * index array, for transparent geometry drawn with blending (zline.h,
  * BLENDING): the key of zl_painter.c (the farthest vertex's window depth,
- * far first; equal keys put the later triangle first), the same in-place
- * heap sort, over caller memory.
+ * far first; equal keys put the later triangle first), and the heap sort
+ * both use (zl_sort_far_first), over caller memory.
  */
-#include "../1_base/zl_internal.h"
-#include "zline/zl_visibility.h"
+#include "zl_vis_internal.h"
 
 /* Window depth of a clip-space vertex as Q16 (0 .. 65536): z / w clamped
  * to the depth range, which is what clipping against near and far leaves
@@ -29,24 +28,48 @@ static int before(const uint32_t *keys, const uint16_t *order, uint32_t i, uint3
     return keys[i] > keys[j] || (keys[i] == keys[j] && order[i] > order[j]);
 }
 
+static void swap_entries(uint32_t *keys, uint16_t *order, uint32_t i, uint32_t j)
+{
+    uint32_t k = keys[i];
+    uint16_t o = order[i];
+    keys[i] = keys[j];
+    order[i] = order[j];
+    keys[j] = k;
+    order[j] = o;
+}
+
+/* Restore the max-heap (by `before`: the root comes last) below `root`. */
 static void sift_down(uint32_t *keys, uint16_t *order, uint32_t root, uint32_t n)
 {
     for (;;) {
-        uint32_t child = 2 * root + 1, k;
-        uint16_t o;
+        uint32_t child = 2 * root + 1;
         if (child >= n)
             return;
         if (child + 1 < n && before(keys, order, child, child + 1))
             child++;
         if (!before(keys, order, root, child))
             return;
-        k = keys[root];
-        keys[root] = keys[child];
-        keys[child] = k;
-        o = order[root];
-        order[root] = order[child];
-        order[child] = o;
+        swap_entries(keys, order, root, child);
         root = child;
+    }
+}
+
+/* The painter's order in place: an in-place heap sort of the (key, id)
+ * pairs, O(n log n) comparisons, no extra memory, no recursion. Heap sort is
+ * not stable, so the id is part of the comparison: the order is total and
+ * the result unique. The heap's root is the entry that comes last, moved to
+ * the end each step, so ids[] ends in drawing order. zl_painter_draw sorts
+ * its planned triangles with it too. */
+void zl_sort_far_first(uint32_t *keys, uint16_t *ids, uint32_t n)
+{
+    uint32_t i;
+    if (n < 2)
+        return;
+    for (i = n / 2; i-- > 0;)
+        sift_down(keys, ids, i, n);
+    for (i = n - 1; i > 0; i--) {
+        swap_entries(keys, ids, 0, i);
+        sift_down(keys, ids, 0, i);
     }
 }
 
@@ -87,21 +110,7 @@ zl_status zl_painter_order(const zl_mesh *mesh, const zl_mat4 *mvp, uint16_t *ou
         keys[t] = key;
         order[t] = (uint16_t)t;
     }
-    if (n >= 2) {
-        for (i = n / 2; i-- > 0;)
-            sift_down(keys, order, i, n);
-        for (i = n - 1; i > 0; i--) {
-            uint32_t k = keys[0];
-            uint16_t o = order[0];
-            keys[0] = keys[i];
-            order[0] = order[i];
-            keys[i] = k;
-            order[i] = o;
-            sift_down(keys, order, 0, i);
-        }
-    }
-    /* the heap's root is the entry that comes last, moved to the end each
-     * step: order[] is now the drawing order */
+    zl_sort_far_first(keys, order, n);
     for (i = 0; i < n; i++) {
         uint32_t src = (uint32_t)order[i] * 3u;
         out_indices[i * 3] = mesh->indices[src];

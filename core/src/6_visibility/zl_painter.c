@@ -6,10 +6,9 @@
  * put the later-submitted triangle first so that the earlier one ends on top,
  * as the z-buffer's LESS keeps the first of two equal depths.
  *
- * The sort is an in-place heap sort over the (key, id) pairs planning
- * recorded: O(n log n) comparisons in the worst case, no extra memory, no
- * recursion. Heap sort is not stable, which is why the id is part of the
- * comparison: the order is total, so the result is unique.
+ * The sort is zl_sort_far_first (zl_order.c), an in-place heap sort over
+ * the (key, id) pairs planning recorded: O(n log n) comparisons, no extra
+ * memory, no recursion, a total order (the id breaks ties).
  *
  * Where it fails (docs/VISIBILITY.md shows each): two triangles that
  * intersect (each is in front over part of the other), three or more that
@@ -20,52 +19,6 @@
  * which is what small renderers ship.
  */
 #include "zl_vis_internal.h"
-
-/* Does entry i come before entry j (farther, or as far and later)? */
-static int before(const zl_vis *v, uint32_t i, uint32_t j)
-{
-    uint32_t ki = v->keys[i], kj = v->keys[j];
-    return ki > kj || (ki == kj && v->visible[i] > v->visible[j]);
-}
-
-static void swap_entries(zl_vis *v, uint32_t i, uint32_t j)
-{
-    uint32_t k = v->keys[i];
-    uint16_t id = v->visible[i];
-    v->keys[i] = v->keys[j];
-    v->visible[i] = v->visible[j];
-    v->keys[j] = k;
-    v->visible[j] = id;
-}
-
-/* Restore the max-heap (by `before`: the root comes last) below `root`. */
-static void sift_down(zl_vis *v, uint32_t root, uint32_t n)
-{
-    for (;;) {
-        uint32_t child = 2 * root + 1;
-        if (child >= n)
-            return;
-        if (child + 1 < n && before(v, child, child + 1))
-            child++;
-        if (!before(v, root, child))
-            return;
-        swap_entries(v, root, child);
-        root = child;
-    }
-}
-
-static void heap_sort(zl_vis *v, uint32_t n)
-{
-    uint32_t i;
-    if (n < 2)
-        return;
-    for (i = n / 2; i-- > 0;)
-        sift_down(v, i, n);
-    for (i = n - 1; i > 0; i--) {
-        swap_entries(v, 0, i);
-        sift_down(v, 0, i);
-    }
-}
 
 zl_status zl_painter_draw(zl_vis *v, const zl_vis_target *target, zl_rgb clear)
 {
@@ -82,7 +35,7 @@ zl_status zl_painter_draw(zl_vis *v, const zl_vis_target *target, zl_rgb clear)
     if (st != ZL_OK)
         return st;
     n = v->needs.triangles;
-    heap_sort(v, n);
+    zl_sort_far_first(v->keys, v->visible, n);
     zl_vis_clear_target(target, clear);
     for (e = 0; e < n; e++) {
         uint16_t id = v->visible[e];

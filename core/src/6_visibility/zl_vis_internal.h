@@ -80,4 +80,8 @@ static inline int64_t zl_vis_depth_at(const zl_active *t, int32_t x)
     return v < lo ? lo : (v > hi ? hi : v);
 }
 
+/* zl_order.c: sort (key, id) pairs far first, equal keys later id first:
+ * the painter's order, used by zl_painter_draw and zl_painter_order. */
+void zl_sort_far_first(uint32_t *keys, uint16_t *ids, uint32_t n);
+
 #endif /* ZLINE_VIS_INTERNAL_H */
