@@ -30,6 +30,10 @@ for m in scanline band=8 band=60 band=240; do
     echo "| $m | $(count render_once "$bench/zline-bench-modes" "$model" --only $m) |"
 done
 echo
+echo "### Host time per frame (bunny, 320x240 RGB565, clear included)"
+echo
+"$bench/zline-bench-time" "$model" 2001
+echo
 echo "### Per-row cost against triangles elsewhere (scanline mode, rows 1..119)"
 echo
 base=$(count render_top_rows "$bench/zline-bench-offrow" base)
