@@ -2,13 +2,14 @@
 """Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
 
     python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
-                                  [--riscv BUILD_DIR] [--riscv-only]
+                                  [--riscv BUILD_DIR] [--riscv-only] [--slots BUILD_PREFIX]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
 KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny and
 tools/visbench/measure.sh (a host build with the render command's targets, and valgrind), with
 --riscv also port/riscv/bench/measure.sh (rv32imac; --riscv-only: that alone, build/rv32imac-bench
-unless --riscv names one), splits their output into sections ("### title"
+unless --riscv names one), with --slots also port/cortex-m/bench/slot-sweep.sh (five Cortex-M4
+builds, BUILD_PREFIX-N; the table is not part of --check, which would take minutes), splits their output into sections ("### title"
 plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
@@ -179,12 +180,12 @@ def refresh(doc, secs, vis, check=False):
 
 
 def main():
-    build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
+    build, host, riscv, cortex_m, slots = "build/cortex-m4-bench", None, None, True, None
     args = sys.argv[1:]
     check = False
     if args and args[0] == "--check":
         check, args = True, args[1:]
-    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only"):
+    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only", "--slots"):
         if args[0] == "--riscv-only":
             cortex_m, riscv = False, riscv or "build/rv32imac-bench"
             args = args[1:]
@@ -195,6 +196,8 @@ def main():
             build = args[1]
         elif args[0] == "--host":
             host = args[1]
+        elif args[0] == "--slots":
+            slots = args[1]
         else:
             riscv = args[1]
         args = args[2:]
@@ -206,6 +209,8 @@ def main():
         text += "\n" + run(["sh", "tools/visbench/measure.sh", host])
     if riscv:
         text += "\n" + run(["sh", "port/riscv/bench/measure.sh", "rv32imac", riscv])
+    if slots:
+        text += "\n" + run(["sh", "port/cortex-m/bench/slot-sweep.sh", slots])
     if cortex_m:
         text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
         vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
