@@ -49,21 +49,8 @@ typedef struct {
 
 static void render_frame_mode(const scene *s)
 {
-    zl_target t;
     zl_context ctx;
-    zl_rgb bg = {20, 24, 32};
-    memset(&t, 0, sizeof t);
-    t.color = frame_color;
-    t.color_stride = BENCH_W * 2;
-    t.depth = frame_depth;
-    t.depth_stride = BENCH_W * 2;
-    t.width = BENCH_W;
-    t.height = BENCH_H;
-    t.format = ZL_FORMAT_RGB565;
-    if (zl_init(&ctx, &t) != ZL_OK)
-        exit(2);
-    zl_clear(&ctx, bg, 65535);
-    ctx.state = s->state;
+    bench_scene_context(&ctx, frame_color, frame_depth, &s->state);
     if (zl_draw_mesh(&ctx, &s->mesh, &s->mvp) != ZL_OK)
         exit(2);
 }

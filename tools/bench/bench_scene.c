@@ -2,6 +2,8 @@
 #include "bench_scene.h"
 
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 int bench_scene_load(const char *path, zl_obj *obj, zl_mesh *mesh, zl_mat4 *mvp, zl_state *state)
 {
@@ -35,4 +37,22 @@ int bench_scene_load(const char *path, zl_obj *obj, zl_mesh *mesh, zl_mat4 *mvp,
     state->light_dir.y = 32768;
     state->light_dir.z = 49152;
     return 0;
+}
+
+void bench_scene_context(zl_context *ctx, uint16_t *color, uint16_t *depth, const zl_state *state)
+{
+    zl_target t;
+    zl_rgb background = {20, 24, 32};
+    memset(&t, 0, sizeof t);
+    t.color = color;
+    t.color_stride = BENCH_W * 2;
+    t.depth = depth;
+    t.depth_stride = BENCH_W * 2;
+    t.width = BENCH_W;
+    t.height = BENCH_H;
+    t.format = ZL_FORMAT_RGB565;
+    if (zl_init(ctx, &t) != ZL_OK)
+        exit(2);
+    zl_clear(ctx, background, 65535);
+    ctx->state = *state;
 }

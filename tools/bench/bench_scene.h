@@ -18,4 +18,9 @@
  * Returns 0 on success; prints the loader's message otherwise. */
 int bench_scene_load(const char *path, zl_obj *obj, zl_mesh *mesh, zl_mat4 *mvp, zl_state *state);
 
+/* A frame-mode context on BENCH_W x BENCH_H RGB565 colour and depth arrays,
+ * cleared to the benchmark's background and far depth, with `state`. Exits
+ * with status 2 if zl_init refuses (it cannot for these arguments). */
+void bench_scene_context(zl_context *ctx, uint16_t *color, uint16_t *depth, const zl_state *state);
+
 #endif

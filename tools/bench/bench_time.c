@@ -46,20 +46,8 @@ typedef struct {
 
 static void draw_frame(const scene *s)
 {
-    zl_target t;
     zl_context ctx;
-    memset(&t, 0, sizeof t);
-    t.color = color;
-    t.color_stride = BENCH_W * 2;
-    t.depth = depth;
-    t.depth_stride = BENCH_W * 2;
-    t.width = BENCH_W;
-    t.height = BENCH_H;
-    t.format = ZL_FORMAT_RGB565;
-    if (zl_init(&ctx, &t) != ZL_OK)
-        exit(2);
-    zl_clear(&ctx, background, 65535);
-    ctx.state = s->state;
+    bench_scene_context(&ctx, color, depth, &s->state);
     ctx.vertex_cache = s->vertex_cache;
     ctx.vertex_cache_bytes = s->vertex_cache_bytes;
     if (zl_draw_mesh(&ctx, &s->mesh, &s->mvp) != ZL_OK)
