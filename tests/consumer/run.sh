@@ -232,7 +232,7 @@ check headers_cxx11_gxx headers g++ "$strict_cxx" cpp
 check headers_cxx11_clangxx headers clang++ "$strict_cxx" cpp
 check subdir_host subdir_host
 for cpu_abi in ${CONSUMER_CPUS:-cortex-m0 cortex-m0plus cortex-m3 cortex-m4 cortex-m4f:softfp cortex-m4f:hard \
-    cortex-m7:softfp cortex-m7:hard cortex-m33:hard cortex-m55:hard}; do
+    cortex-m7:softfp cortex-m7:hard cortex-m33:hard cortex-m55:hard cortex-m55:soft}; do
     cpu=${cpu_abi%%:*}
     abi=
     [ "$cpu" = "$cpu_abi" ] || abi=${cpu_abi#*:}
