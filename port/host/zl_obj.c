@@ -15,6 +15,7 @@
  * positions are normalised if asked and converted to Q16.16.
  */
 #include "zl_obj.h"
+#include "zl_read_file.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -1385,9 +1386,9 @@ zl_obj_status zl_obj_load_mem_tex(zl_obj *obj, const char *data, size_t size, co
 static zl_obj_status load_file(zl_obj *obj, const char *path, const zl_obj_options *opt, int texcoords,
                                char *msg, size_t msg_size)
 {
-    FILE *f;
-    char *buf = NULL;
-    size_t size = 0, cap = 0;
+    char *buf;
+    size_t size;
+    zl_read_status rs;
     zl_obj_status st;
     if (msg != NULL && msg_size > 0)
         msg[0] = '\0';
@@ -1396,33 +1397,9 @@ static zl_obj_status load_file(zl_obj *obj, const char *path, const zl_obj_optio
         return ZL_OBJ_ERR_ARG;
     }
     memset(obj, 0, sizeof *obj);
-    f = fopen(path, "rb");
-    if (f == NULL) {
-        set_msg(msg, msg_size, "%s: cannot open: %s", path, strerror(errno));
-        return ZL_OBJ_ERR_IO;
-    }
-    for (;;) {
-        size_t got;
-        char *nb = (char *)grow(buf, &cap, size + 65536, 1);
-        if (nb == NULL) {
-            free(buf);
-            fclose(f);
-            set_msg(msg, msg_size, "%s: out of memory reading the file", path);
-            return ZL_OBJ_ERR_MEMORY;
-        }
-        buf = nb;
-        got = fread(buf + size, 1, cap - size, f);
-        size += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(f)) {
-        free(buf);
-        fclose(f);
-        set_msg(msg, msg_size, "%s: read error", path);
-        return ZL_OBJ_ERR_IO;
-    }
-    fclose(f);
+    rs = zl_read_file(path, &buf, &size, msg, msg_size);
+    if (rs != ZL_READ_OK)
+        return rs == ZL_READ_ERR_MEMORY ? ZL_OBJ_ERR_MEMORY : ZL_OBJ_ERR_IO;
     st = load_mem(obj, buf, size, path, opt, texcoords, msg, msg_size);
     free(buf);
     return st;

@@ -4,6 +4,7 @@
 #endif
 
 #include "zl_pnm.h"
+#include "zl_read_file.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -399,9 +400,10 @@ static int header_number(const uint8_t *b, size_t n, size_t *i, uint32_t *out)
 
 zl_pnm_status zl_pnm_read(zl_pnm_image *img, const char *path, char *msg, size_t msg_size)
 {
-    FILE *f;
-    uint8_t *buf = NULL;
-    size_t size = 0, cap = 0, i = 2, count, bytes, k;
+    char *data;
+    uint8_t *buf;
+    zl_read_status rs;
+    size_t size, i = 2, count, bytes, k;
     uint32_t width, height, maxval, channels, sample_bytes;
     if (msg != NULL && msg_size > 0)
         msg[0] = '\0';
@@ -410,36 +412,10 @@ zl_pnm_status zl_pnm_read(zl_pnm_image *img, const char *path, char *msg, size_t
         return ZL_PNM_ERR_ARG;
     }
     memset(img, 0, sizeof *img);
-    f = fopen(path, "rb");
-    if (f == NULL) {
-        set_msg(msg, msg_size, "%s: cannot open: %s", path, strerror(errno));
-        return ZL_PNM_ERR_IO;
-    }
-    for (;;) {
-        size_t got;
-        if (size == cap) {
-            uint8_t *nb = (uint8_t *)realloc(buf, cap ? cap * 2 : 65536);
-            if (nb == NULL) {
-                free(buf);
-                fclose(f);
-                set_msg(msg, msg_size, "%s: out of memory", path);
-                return ZL_PNM_ERR_MEMORY;
-            }
-            buf = nb;
-            cap = cap ? cap * 2 : 65536;
-        }
-        got = fread(buf + size, 1, cap - size, f);
-        size += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(f)) {
-        free(buf);
-        fclose(f);
-        set_msg(msg, msg_size, "%s: read error", path);
-        return ZL_PNM_ERR_IO;
-    }
-    fclose(f);
+    rs = zl_read_file(path, &data, &size, msg, msg_size);
+    if (rs != ZL_READ_OK)
+        return rs == ZL_READ_ERR_MEMORY ? ZL_PNM_ERR_MEMORY : ZL_PNM_ERR_IO;
+    buf = (uint8_t *)data;
 
     if (size < 2 || buf[0] != 'P' || (buf[1] != '6' && buf[1] != '5')) {
         free(buf);
