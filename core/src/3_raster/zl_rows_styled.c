@@ -353,7 +353,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
     const zl_texture *tex = sty->texcoords != NULL ? sty->texture : NULL;
     const int64_t f16 = 1 << (ZL_ATTR_FRAC - 16), big = (int64_t)1 << 40;
     int32_t x0 = t->left.x, x1 = t->right.x, i, n;
-    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE, pg = g != NULL && ss->gouraud && sty->persp_gouraud;
+    /* tp->persp: a clipped triangle across the eye plane (zline.h, Clipping) */
+    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE || tp->persp, pg = g != NULL && ss->gouraud && sty->persp_gouraud;
     int lg = g != NULL && ss->gouraud && !sty->persp_gouraud; /* screen-linear Gouraud (blending) */
     unsigned blend = sty->blend;
     uint32_t lc[3] = {0, 0, 0}, ldc[3] = {0, 0, 0};
