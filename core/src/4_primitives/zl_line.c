@@ -419,6 +419,22 @@ static zl_rgb flat_of(const zl_style *sty, const zl_poly *poly)
     return poly->flat;
 }
 
+/* Move the anchor column of a set-up record's planes to ax: the same
+ * planes, exactly (no rounding: value plus whole pixels of change). */
+static void reanchor(zl_active *t, zl_gouraud *g, zl_texplanes *tp, int32_t ax)
+{
+    int64_t d = (int64_t)ax - t->ax;
+    unsigned k;
+    t->z.row += d * t->z.dx;
+    if (g != NULL)
+        for (k = 0; k < 3; k++)
+            g->c[k].row += d * g->c[k].dx;
+    tp->u.row += d * tp->u.dx;
+    tp->v.row += d * tp->v.dx;
+    tp->q.row += d * tp->q.dx;
+    t->ax = ax;
+}
+
 /* A piece of a clipped polygon, set up from its own (clipped, snapped)
  * vertices: give it the depth, colour and texture planes of the original
  * triangle instead (zline.h, Clipping). Out of line: its frame is not on
@@ -431,7 +447,15 @@ ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint
     int planes = tp != NULL && zl_style_needs_planes(sty);
     int gouraud = g != NULL && s->state->shading == ZL_SHADE_GOURAUD;
     int persp_colour = gouraud && sty != NULL && sty->persp_gouraud;
-    int got = zl_tri_orig_planes(s, tri, t->ax, t->row, gouraud && !persp_colour, poly->light, &z, col);
+    int got;
+    /* The texture span loops step u q and q from the anchor column by their
+     * rounded change per pixel, in units of 2^16 / q texel: at far pixels
+     * (small q) of a piece reaching into the guard band, hundreds of pixels
+     * from its anchor, that added up to texels. An anchor in the target
+     * keeps every pixel within a row's width of it. */
+    if (planes && (t->ax < 0 || t->ax >= (int32_t)s->width))
+        reanchor(t, g, tp, t->ax < 0 ? 0 : (int32_t)s->width - 1);
+    got = zl_tri_orig_planes(s, tri, t->ax, t->row, gouraud && !persp_colour, poly->light, &z, col);
     if (got == 0)
         return;
     zl_tri_set_planes(t, g, a, b, c, &z, (got & 2) ? col : NULL, !zl_style_needs_planes(sty));
@@ -442,8 +466,7 @@ ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint
         unsigned k;
         for (k = 1; k < poly->n; k++)
             wmin = tpoly->w[k] < wmin ? tpoly->w[k] : wmin;
-        got = zl_tri_orig_texplanes(s, sty, tri, t->ax, t->row, wmin, poly->light, persp_colour, tp,
-                                    col);
+        got = zl_tri_orig_texplanes(s, sty, tri, t->ax, t->row, wmin, poly->light, persp_colour, tp, col);
         if ((got & 2) && g != NULL) {
             g->c[0] = col[0];
             g->c[1] = col[1];
