@@ -293,14 +293,14 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
  * leaves 0 .. 65535 beyond the near and far planes) at three subpixel
  * positions; 0 when it has no plane. */
 int zl_tri_orig_depths3(const zl_source *s, uint32_t t, const int32_t x[3], const int32_t y[3], int64_t z[3]);
-/* The texture and perspective planes of triangle t before clipping (the
+/* The texture and perspective planes of triangle tri before clipping (the
  * scales of zl_texplanes, q scaled so that 2^24 is at clip w = wmin, the
- * least w of the clipped polygon), at the centre of pixel (ax, ay); with
- * persp_colour also the perspective-correct colour planes (times light /
- * 255) into col. Returns 0 when there is no plane, else 1, plus 2 with the
- * colour planes. */
-int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t t, int32_t ax, int32_t ay, int32_t wmin,
-                          uint8_t light, int persp_colour, zl_texplanes *tp, zl_attr col[3]);
+ * least w of the clipped polygon), at the anchor of record t (t->ax,
+ * t->row); with col (not NULL) also the perspective-correct colour planes
+ * (times t->light / 255). Returns 0 when there is no plane, else 1, plus 2
+ * with the colour planes. */
+int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_active *t, int32_t wmin,
+                          zl_texplanes *tp, zl_attr col[3]);
 /* The light of a state as zl_tri_shade_lit takes it (Q14, clamped, with the
  * front face's sign), once per draw instead of once per triangle. */
 void zl_light_prepare(const zl_state *st, int32_t lq[3]);

@@ -475,17 +475,16 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
  * from Q8 colours times light / 255: sum c_i wmin b_i times 2^12 light /
  * 255. A triangle with a vertex at w <= 0 has no screen-linear
  * interpolation: its affine texture is perspective-correct (tp->persp). */
-int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t t, int32_t ax, int32_t ay, int32_t wmin,
-                          uint8_t light, int persp_colour, zl_texplanes *tp, zl_attr col[3])
+int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_active *t, int32_t wmin,
+                          zl_texplanes *tp, zl_attr col[3])
 {
-    const uint16_t *idx = &s->mesh->indices[t * 3u];
     hsolve h;
-    int32_t zc[3], w[3], tu, tv;
+    int32_t zc[3], w[3];
     uint16_t rgb[3][3];
-    int64_t a[3], b[3];
+    int64_t a[3];
     unsigned i, ch;
-    int persp, done = 1;
-    if (!solve_of(s, t, ax, ay, &h, zc, w, rgb))
+    int persp;
+    if (!solve_of(s, tri, t->ax, t->row, &h, zc, w, rgb))
         return 0;
     for (i = 0; i < 3; i++)
         a[i] = wmin;
@@ -495,21 +494,21 @@ int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t t, i
     memset(&tp->u, 0, sizeof tp->u);
     memset(&tp->v, 0, sizeof tp->v);
     if (sty->texture != NULL && sty->texcoords != NULL) {
-        for (i = 0; i < 3; i++) {
-            tex_coords(sty, idx[i], &tu, &tv);
-            a[i] = (int64_t)tu * (persp ? wmin : w[i]);
-            b[i] = (int64_t)tv * (persp ? wmin : w[i]);
+        for (ch = 0; ch < 2; ch++) { /* u, then v */
+            for (i = 0; i < 3; i++) {
+                int32_t c[2];
+                tex_coords(sty, s->mesh->indices[tri * 3u + i], &c[0], &c[1]);
+                a[i] = (int64_t)c[ch] * (persp ? wmin : w[i]);
+            }
+            attr_plane(ch == 0 ? &tp->u : &tp->v, &h, a, 16, 1);
         }
-        attr_plane(&tp->u, &h, a, 16, 1);
-        attr_plane(&tp->v, &h, b, 16, 1);
     }
-    if (persp_colour) {
-        for (ch = 0; ch < 3; ch++) {
-            for (i = 0; i < 3; i++)
-                a[i] = (int64_t)rgb[i][ch] * wmin;
-            attr_plane(&col[ch], &h, a, (int64_t)light << 12, 255);
-        }
-        done |= 2;
+    if (col == NULL)
+        return 1;
+    for (ch = 0; ch < 3; ch++) {
+        for (i = 0; i < 3; i++)
+            a[i] = (int64_t)rgb[i][ch] * wmin;
+        attr_plane(&col[ch], &h, a, (int64_t)t->light << 12, 255);
     }
-    return done;
+    return 3;
 }

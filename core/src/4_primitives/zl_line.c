@@ -421,7 +421,7 @@ static zl_rgb flat_of(const zl_style *sty, const zl_poly *poly)
 
 /* Move the anchor column of a set-up record's planes to ax: the same
  * planes, exactly (no rounding: value plus whole pixels of change). */
-static void reanchor(zl_active *t, zl_gouraud *g, zl_texplanes *tp, int32_t ax)
+static ZL_NOINLINE void reanchor(zl_active *t, zl_gouraud *g, zl_texplanes *tp, int32_t ax)
 {
     int64_t d = (int64_t)ax - t->ax;
     unsigned k;
@@ -433,6 +433,19 @@ static void reanchor(zl_active *t, zl_gouraud *g, zl_texplanes *tp, int32_t ax)
     tp->v.row += d * tp->v.dx;
     tp->q.row += d * tp->q.dx;
     t->ax = ax;
+}
+
+/* The least clip w of a textured polygon (poly is the p of a zl_tpoly:
+ * zl_tri_setup_ex's contract when the style needs planes). Out of line, as
+ * reanchor: nothing of it is on the stack under the plane solves. */
+static ZL_NOINLINE int32_t poly_wmin(const zl_poly *poly)
+{
+    const zl_tpoly *tpoly = (const zl_tpoly *)(const void *)poly;
+    int32_t wmin = tpoly->w[0];
+    unsigned k;
+    for (k = 1; k < poly->n; k++)
+        wmin = tpoly->w[k] < wmin ? tpoly->w[k] : wmin;
+    return wmin;
 }
 
 /* A piece of a clipped polygon, set up from its own (clipped, snapped)
@@ -459,20 +472,8 @@ ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint
     if (got == 0)
         return;
     zl_tri_set_planes(t, g, a, b, c, &z, (got & 2) ? col : NULL, !zl_style_needs_planes(sty));
-    if (planes) {
-        /* poly is the p of a zl_tpoly (zl_tri_setup_ex's contract) */
-        const zl_tpoly *tpoly = (const zl_tpoly *)(const void *)poly;
-        int32_t wmin = tpoly->w[0];
-        unsigned k;
-        for (k = 1; k < poly->n; k++)
-            wmin = tpoly->w[k] < wmin ? tpoly->w[k] : wmin;
-        got = zl_tri_orig_texplanes(s, sty, tri, t->ax, t->row, wmin, poly->light, persp_colour, tp, col);
-        if ((got & 2) && g != NULL) {
-            g->c[0] = col[0];
-            g->c[1] = col[1];
-            g->c[2] = col[2];
-        }
-    }
+    if (planes)
+        (void)zl_tri_orig_texplanes(s, sty, tri, t, poly_wmin(poly), tp, persp_colour ? g->c : NULL);
 }
 
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
