@@ -83,6 +83,7 @@ typedef struct {
     unsigned tris, clipped, near, far, both, eye;
     unsigned pixels, checked, boundary;
     double worst_color, worst_texel; /* texels from the reference coordinate to the sampled texel */
+    double worst_any;                /* the same over every pixel, those near a boundary too */
 } stats;
 
 static int solve3(long double m[3][3], long double r[3], long double b[3])
@@ -313,13 +314,15 @@ static void check_texel(const tri_ref *t, int i, int j, unsigned iu, unsigned iv
     char msg[220];
     TEST_ASSERT_TRUE(reference(t, i, j, linear, want));
     w = want[5];
+    du = texel_distance(want[3], (int)iu);
+    dv = texel_distance(want[4], (int)iv);
+    if ((double)(du > dv ? du : dv) > st->worst_any)
+        st->worst_any = (double)(du > dv ? du : dv);
     if (near_boundary(want[3], tolerance(t, want[3], w, linear)) ||
         near_boundary(want[4], tolerance(t, want[4], w, linear))) {
         st->boundary++;
         return;
     }
-    du = texel_distance(want[3], (int)iu);
-    dv = texel_distance(want[4], (int)iv);
     if ((double)du > st->worst_texel)
         st->worst_texel = (double)du;
     if ((double)dv > st->worst_texel)
@@ -424,9 +427,9 @@ static void random_attrs(uint8_t rgb[9], zl_fixed uv[6])
 static void print_stats(const char *name, const stats *st)
 {
     printf("%s: %u triangles, %u clipped (near %u, far %u, both %u, eye plane %u); %u pixels, %u checks, %u within "
-           "the tolerance of a texel boundary; worst colour error %.3f, worst texel distance %.4f\n",
+           "the tolerance of a texel boundary; worst colour error %.3f, worst texel distance %.4f (%.4f with those)\n",
            name, st->tris, st->clipped, st->near, st->far, st->both, st->eye, st->pixels, st->checked, st->boundary,
-           st->worst_color, st->worst_texel);
+           st->worst_color, st->worst_texel, st->worst_any);
 }
 
 static void pixel_space_case(int kind, stats *st)
