@@ -242,6 +242,7 @@ int scene_make(scene *s, int which)
         if (scene_make(s, SCENE_BUNNY) != 0)
             return -1;
         s->name = "bunny_clip";
+        s->state.cull = ZL_CULL_NONE; /* the cut-open model's inside shows */
         return camera_view_near(&s->mvp, &view, eye, ZL_FX_ONE * 345 / 100);
     }
     default:

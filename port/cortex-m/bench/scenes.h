@@ -21,10 +21,10 @@
  *   bunny_exact  the benchmark scene with zl_state near_z = 0.1, far_z = 100:
  *                the exact depth mapping (zline.h, Pseudodepth), its cost
  *   bunny_clip   the benchmark scene with the near plane at 3.45, just in
- *                front of the bunny's centre: it cuts the model through the
- *                middle, so the triangles along the cut are clipped (their
- *                pieces take the original triangles' planes: the cost of
- *                clipping next to bunny)
+ *                front of the bunny's centre and no culling: the near
+ *                plane cuts the model through the middle (198 of its 3674
+ *                triangles cross it; their pieces take the original
+ *                triangles' planes) and its inside shows
  *   tetra        (golden test only) a vertex-coloured model close to the
  *                camera: near-plane clipping and Gouraud shading
  *   textured     (golden test only, issue 15) floor.obj (texture coordinates
