@@ -467,7 +467,7 @@ ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint
      * from its anchor, that added up to texels. An anchor in the target
      * keeps every pixel within a row's width of it. */
     if (planes && (t->ax < 0 || t->ax >= (int32_t)s->width))
-        reanchor(t, g, tp, t->ax < 0 ? 0 : (int32_t)s->width - 1);
+        reanchor(t, gouraud ? g : NULL, tp, t->ax < 0 ? 0 : (int32_t)s->width - 1); /* g: set up when Gouraud */
     got = zl_tri_orig_planes(s, tri, t->ax, t->row, gouraud && !persp_colour, poly->light, &z, col);
     if (got == 0)
         return;
