@@ -29,7 +29,8 @@
  *   centre. (Nearly edge-on triangles whose depth changes by more than 2^20
  *   steps per pixel get depths clamped to their vertices' range instead.)
  *   A triangle that clipping cuts (see Clipping) is the exception: its depth
- *   is that of the original triangle, not of its snapped pieces.
+ *   (and colour and texture coordinates) are those of the original
+ *   triangle, not of its snapped pieces.
  *
  * Pseudodepth: for the perspective projection, with eye distance z (> 0),
  *   near n and far f,
@@ -65,8 +66,10 @@
  *   triangle. A triangle through the eye point is clipped at the near plane
  *   like any other: no wrap-around, no division by zero.
  *   Clipping decides coverage only (the snapped clipped polygon, split into
- *   a fan, by the rules above). Depth and screen-linear Gouraud colour come
- *   from the original triangle, as if it had not been cut: at every pixel a
+ *   a fan, by the rules above). Depth, Gouraud colour and texture
+ *   coordinates come from the original triangle, as if it had not been
+ *   cut (each piece's span loop runs with the original triangle's planes,
+ *   set up once per piece): at every pixel a
  *   clipped triangle covers, the stored depth is within +-1 of
  *   clamp(round(65535 z_w), 0, 65535) with z_w the exact depth at the pixel
  *   centre of the triangle through its three clip-space vertices as the
@@ -78,13 +81,30 @@
  *   gets 0 or 65535. When every vertex has w > 0, the Gouraud colour is
  *   within +-1 of the exact screen-linear interpolation of the vertex
  *   colours at the unsnapped projected vertices (times the light
- *   intensity / 255). Exceptions: pixels where the depth changes by more
- *   than 65536 steps per pixel; a triangle with a vertex at w <= 0 (across
- *   the eye plane) keeps, for its colour, the colours the clipper gives
- *   its polygon's vertices; textures and perspective-correct Gouraud are
- *   interpolated per piece. zl_visibility's AET and ray caster compare the
- *   same original planes (its painter and BSP store no depth). Checked
- *   against an exact reference by tests/host/test_clip_planes.c.
+ *   intensity / 255). Perspective-correct Gouraud colour and texture
+ *   coordinates come from the same original planes: a / w and 1 / w are
+ *   affine in the window position, and the span loops divide them per
+ *   pixel as for an unclipped triangle, so perspective-correct colour is
+ *   within +-1 of sum c_i b_i / sum b_i (b = M^-1 n as above, times the
+ *   light / 255), and a texture coordinate c (texels) of
+ *   sum c_i b_i / sum b_i, or for an affine texture of the screen-linear
+ *   sum c_i w_i b_i / sum w_j b_j; the texel sampled is the one containing
+ *   that value except within 1/32 texel + |c| / 2^14 of a texel boundary,
+ *   plus the drift of the stepped planes: half a plane unit for each of
+ *   the up to 1 + width + height pixel steps from the anchor, a unit being
+ *   1/4096 texel (affine) or 2^16 / Q texel, Q = 2^28 w_min / w (the
+ *   pixel's w against the least w of the clipped polygon), as for an
+ *   unclipped triangle. A triangle with a vertex at w <= 0 (across the
+ *   eye plane) has no screen-linear interpolation: its affine texture is
+ *   perspective-correct (as OpenGL interpolates), and its screen-linear
+ *   Gouraud colour is, on each fan piece, linear between the colours the
+ *   clipper gives the piece's vertices (perspective-correct there).
+ *   Exception: pixels where the depth changes by more than 65536 steps per
+ *   pixel. zl_visibility's AET and ray caster compare the same original
+ *   planes (its painter and BSP store no depth). Checked against exact
+ *   references by tests/host/test_clip_planes.c (depth, screen-linear
+ *   colour), test_clip_attrs.c (perspective colour, textures) and
+ *   test_clip_coverage.c (coverage: watertight, and pinned).
  *
  * Order: triangles are drawn in submission order; the depth test decides
  *   per pixel. Frame mode and the scanline/band modes of zl_frame produce

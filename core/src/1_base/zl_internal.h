@@ -101,6 +101,9 @@ typedef struct {
  * 2^24, all times 16 (Q20 planes of Q16 inputs). */
 typedef struct {
     zl_attr u, v, q;
+    uint8_t persp; /* u, v perspective-correct although the style maps them
+                      affinely: a clipped triangle with a vertex behind the
+                      eye (zline.h, Clipping) */
 } zl_texplanes;
 
 struct zl_active {
@@ -290,6 +293,14 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
  * leaves 0 .. 65535 beyond the near and far planes) at three subpixel
  * positions; 0 when it has no plane. */
 int zl_tri_orig_depths3(const zl_source *s, uint32_t t, const int32_t x[3], const int32_t y[3], int64_t z[3]);
+/* The texture and perspective planes of triangle tri before clipping (the
+ * scales of zl_texplanes, q scaled so that 2^24 is at clip w = wmin, the
+ * least w of the clipped polygon), at the anchor of record t (t->ax,
+ * t->row); with col (not NULL) also the perspective-correct colour planes
+ * (times t->light / 255). Returns 0 when there is no plane, else 1, plus 2
+ * with the colour planes. */
+int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_active *t, int32_t wmin,
+                          zl_texplanes *tp, zl_attr col[3]);
 /* The light of a state as zl_tri_shade_lit takes it (Q14, clamped, with the
  * front face's sign), once per draw instead of once per triangle. */
 void zl_light_prepare(const zl_state *st, int32_t lq[3]);
@@ -441,10 +452,11 @@ int zl_lines_record(const zl_source *s, const zl_lines *l, const zl_style *sty, 
  * t (and g): 1 if it has pixels. */
 unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly);
 /* A set-up fan triangle (a, b, c) of the clipped polygon of triangle tri:
- * the depth and screen-linear colour planes of the original triangle
- * instead of its own (zl_tri_orig_planes, zl_tri_set_planes). */
+ * the depth, colour and (with tp, when the style needs them; then poly is
+ * the p of a zl_tpoly) texture planes of the original triangle instead of
+ * its own (zl_tri_orig_planes, zl_tri_orig_texplanes, zl_tri_set_planes). */
 void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, const zl_wvert *a,
-                       const zl_wvert *b, const zl_wvert *c, zl_active *t, zl_gouraud *g);
+                       const zl_wvert *b, const zl_wvert *c, zl_active *t, zl_gouraud *g, zl_texplanes *tp);
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
                  zl_active *t, zl_gouraud *g, zl_texplanes *tp);
 

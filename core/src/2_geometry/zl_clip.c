@@ -11,25 +11,6 @@
 
 #include "zl_geometry.h"
 
-/* Texture coordinate (Q16.16 of the size) in 1/256 texel, within +-2^23. */
-static int32_t texel_q8(zl_fixed c, uint16_t size)
-{
-    int64_t v = zl_floor_shift64((int64_t)c * size + 128, 8);
-    const int64_t lim = (int64_t)1 << 23;
-    return (int32_t)(v < -lim ? -lim : (v > lim ? lim : v));
-}
-
-/* Texture coordinates of vertex idx under the style (0 without a texture). */
-static void tex_coords(const zl_style *sty, uint16_t idx, int32_t *u, int32_t *v)
-{
-    *u = 0;
-    *v = 0;
-    if (sty != NULL && sty->texture != NULL && sty->texcoords != NULL) {
-        *u = texel_q8(sty->texcoords[idx * 2u], sty->texture->width);
-        *v = texel_q8(sty->texcoords[idx * 2u + 1], sty->texture->height);
-    }
-}
-
 static unsigned bit_length(uint64_t v)
 {
     unsigned n = 0;

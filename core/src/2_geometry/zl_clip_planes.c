@@ -1,7 +1,8 @@
 /*
  * Stage 2, geometry: the attribute planes of a clipped triangle, from its
- * original (unclipped) vertices. Clipping decides coverage only; the depth
- * and the screen-linear Gouraud colour of every fan piece come from here, so
+ * original (unclipped) vertices. Clipping decides coverage only; the depth,
+ * the Gouraud colour and the texture coordinates of every fan piece come
+ * from here, so
  * the vertices the clipper makes (rounded to Q16.16, then snapped to 1/16
  * pixel) do not tilt the planes of steep pieces.
  *
@@ -16,11 +17,16 @@
  *     1 / w        = sum b_i                            (exact mapping)
  *     screen-linear colour = sum c_i w_i b_i  (the screen barycentrics are
  *                    w_i b_i; meaningful when every w_i > 0)
+ *     perspective-correct a = (sum a_i b_i) / (sum b_i)  (texture
+ *                    coordinates, colour: the two planes zl_texplanes
+ *                    keeps, divided per pixel by the span loop)
  * M^-1 = adj(M) / det(M), and the rows of adj(M) are the cross products
  * C_i = P_j x P_k of the vertex columns, whose components fit 64 bits
  * (products of two Q16.16 numbers). Every sum below is exact, in 256-bit
  * integers; one rounding division per plane coefficient.
  */
+#include <string.h>
+
 #include "zl_geometry.h"
 
 /* ------------------------------------------------ 256-bit integers */
@@ -459,4 +465,50 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
         done |= 2;
     }
     return done;
+}
+
+/* zl_texplanes from the original triangle: q = 2^28 wmin / w = 2^28 wmin
+ * sum b_i (wmin, the clipped polygon's least clip w, keeps q within 2^28 on
+ * the piece, as tex_setup's per-triangle scale does), u q / 2^24 = 16 wmin
+ * sum u_i b_i (u in 1/256 texel: |u_i wmin| < 2^54), or affine
+ * 16 sum u_i w_i b_i; perspective colour c q / 2^24 in Q16 of 0 .. 255,
+ * from Q8 colours times light / 255: sum c_i wmin b_i times 2^12 light /
+ * 255. A triangle with a vertex at w <= 0 has no screen-linear
+ * interpolation: its affine texture is perspective-correct (tp->persp). */
+int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_active *t, int32_t wmin,
+                          zl_texplanes *tp, zl_attr col[3])
+{
+    hsolve h;
+    int32_t zc[3], w[3];
+    uint16_t rgb[3][3];
+    int64_t a[3];
+    unsigned i, ch;
+    int persp;
+    if (!solve_of(s, tri, t->ax, t->row, &h, zc, w, rgb))
+        return 0;
+    for (i = 0; i < 3; i++)
+        a[i] = wmin;
+    attr_plane(&tp->q, &h, a, (int64_t)1 << 28, 1);
+    persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE || w[0] <= 0 || w[1] <= 0 || w[2] <= 0;
+    tp->persp = (uint8_t)(persp && sty->tex_mapping != ZL_TEX_PERSPECTIVE);
+    memset(&tp->u, 0, sizeof tp->u);
+    memset(&tp->v, 0, sizeof tp->v);
+    if (sty->texture != NULL && sty->texcoords != NULL) {
+        for (ch = 0; ch < 2; ch++) { /* u, then v */
+            for (i = 0; i < 3; i++) {
+                int32_t c[2];
+                tex_coords(sty, s->mesh->indices[tri * 3u + i], &c[0], &c[1]);
+                a[i] = (int64_t)c[ch] * (persp ? wmin : w[i]);
+            }
+            attr_plane(ch == 0 ? &tp->u : &tp->v, &h, a, 16, 1);
+        }
+    }
+    if (col == NULL)
+        return 1;
+    for (ch = 0; ch < 3; ch++) {
+        for (i = 0; i < 3; i++)
+            a[i] = (int64_t)rgb[i][ch] * wmin;
+        attr_plane(&col[ch], &h, a, (int64_t)t->light << 12, 255);
+    }
+    return 3;
 }

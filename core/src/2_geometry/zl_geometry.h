@@ -27,6 +27,25 @@ ZL_SHARED_STATIC int32_t color_q8(const zl_mesh *m, uint16_t idx, int k)
     return m->vertex_colors ? (int32_t)m->vertex_colors[idx * 3u + (unsigned)k] * 256 : 0;
 }
 
+/* Texture coordinate (Q16.16 of the size) in 1/256 texel, within +-2^23. */
+ZL_SHARED_STATIC int32_t texel_q8(zl_fixed c, uint16_t size)
+{
+    int64_t v = zl_floor_shift64((int64_t)c * size + 128, 8);
+    const int64_t lim = (int64_t)1 << 23;
+    return (int32_t)(v < -lim ? -lim : (v > lim ? lim : v));
+}
+
+/* Texture coordinates of vertex idx under the style (0 without a texture). */
+ZL_SHARED_STATIC void tex_coords(const zl_style *sty, uint16_t idx, int32_t *u, int32_t *v)
+{
+    *u = 0;
+    *v = 0;
+    if (sty != NULL && sty->texture != NULL && sty->texcoords != NULL) {
+        *u = texel_q8(sty->texcoords[idx * 2u], sty->texture->width);
+        *v = texel_q8(sty->texcoords[idx * 2u + 1], sty->texture->height);
+    }
+}
+
 /* |v| <= 2^30, the coordinate and matrix entry limit, in one compare. */
 ZL_SHARED_STATIC int in_limit(zl_fixed v)
 {

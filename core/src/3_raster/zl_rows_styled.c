@@ -539,7 +539,16 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
     int k;
     if (tp == NULL || !zl_style_needs_planes(sty))
         return zl_tri_row(t, g, ss, color_row, depth_row);
-    row_span_ex(t, sty->persp_gouraud || sty->blend != ZL_BLEND_OFF ? g : NULL, tp, sty, ss, color_row, depth_row);
+    if (tp->persp) {
+        /* a clipped triangle across the eye plane: its affine texture is
+         * perspective-correct (zline.h, Clipping); the span loop is that of
+         * perspective styles, so the common spans' code stays as it was */
+        zl_style ps = *sty;
+        ps.tex_mapping = ZL_TEX_PERSPECTIVE;
+        row_span_ex(t, ps.persp_gouraud || ps.blend != ZL_BLEND_OFF ? g : NULL, tp, &ps, ss, color_row, depth_row);
+    } else {
+        row_span_ex(t, sty->persp_gouraud || sty->blend != ZL_BLEND_OFF ? g : NULL, tp, sty, ss, color_row, depth_row);
+    }
     edge_step(&t->left);
     edge_step(&t->right);
     t->z.row += t->z.dy;

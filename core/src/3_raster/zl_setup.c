@@ -192,6 +192,7 @@ static void tex_setup(zl_texplanes *tp, zl_gouraud *g, const zl_style *sty, cons
             q[k] = 256; /* a w ratio beyond 2^16 inside one triangle */
     }
     plane_setup(&tp->q, pf, q[0], q[1], q[2]);
+    tp->persp = 0;
     memset(&tp->u, 0, sizeof tp->u);
     memset(&tp->v, 0, sizeof tp->v);
     if (sty->texture != NULL && sty->texcoords != NULL) {

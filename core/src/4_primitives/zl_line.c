@@ -419,19 +419,61 @@ static zl_rgb flat_of(const zl_style *sty, const zl_poly *poly)
     return poly->flat;
 }
 
+/* Move the anchor column of a set-up record's planes to ax: the same
+ * planes, exactly (no rounding: value plus whole pixels of change). */
+static ZL_NOINLINE void reanchor(zl_active *t, zl_gouraud *g, zl_texplanes *tp, int32_t ax)
+{
+    int64_t d = (int64_t)ax - t->ax;
+    unsigned k;
+    t->z.row += d * t->z.dx;
+    if (g != NULL)
+        for (k = 0; k < 3; k++)
+            g->c[k].row += d * g->c[k].dx;
+    tp->u.row += d * tp->u.dx;
+    tp->v.row += d * tp->v.dx;
+    tp->q.row += d * tp->q.dx;
+    t->ax = ax;
+}
+
+/* The least clip w of a textured polygon (poly is the p of a zl_tpoly:
+ * zl_tri_setup_ex's contract when the style needs planes). Out of line, as
+ * reanchor: nothing of it is on the stack under the plane solves. */
+static ZL_NOINLINE int32_t poly_wmin(const zl_poly *poly)
+{
+    const zl_tpoly *tpoly = (const zl_tpoly *)(const void *)poly;
+    int32_t wmin = tpoly->w[0];
+    unsigned k;
+    for (k = 1; k < poly->n; k++)
+        wmin = tpoly->w[k] < wmin ? tpoly->w[k] : wmin;
+    return wmin;
+}
+
 /* A piece of a clipped polygon, set up from its own (clipped, snapped)
- * vertices: give it the depth and screen-linear colour planes of the
- * original triangle instead (zline.h, Clipping). Perspective colour and
- * texture planes stay the piece's own. Out of line: its frame is not on the
- * stack of the unclipped path. */
+ * vertices: give it the depth, colour and texture planes of the original
+ * triangle instead (zline.h, Clipping). Out of line: its frame is not on
+ * the stack of the unclipped path. */
 ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly,
-                                   const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, zl_active *t, zl_gouraud *g)
+                                   const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, zl_active *t, zl_gouraud *g,
+                                   zl_texplanes *tp)
 {
     zl_attr z, col[3];
-    int colour = g != NULL && s->state->shading == ZL_SHADE_GOURAUD && !(sty != NULL && sty->persp_gouraud);
-    int got = zl_tri_orig_planes(s, tri, t->ax, t->row, colour, poly->light, &z, col);
-    if (got != 0)
-        zl_tri_set_planes(t, g, a, b, c, &z, (got & 2) ? col : NULL, !zl_style_needs_planes(sty));
+    int planes = tp != NULL && zl_style_needs_planes(sty);
+    int gouraud = g != NULL && s->state->shading == ZL_SHADE_GOURAUD;
+    int persp_colour = gouraud && sty != NULL && sty->persp_gouraud;
+    int got;
+    /* The texture span loops step u q and q from the anchor column by their
+     * rounded change per pixel, in units of 2^16 / q texel: at far pixels
+     * (small q) of a piece reaching into the guard band, hundreds of pixels
+     * from its anchor, that added up to texels. An anchor in the target
+     * keeps every pixel within a row's width of it. */
+    if (planes && (t->ax < 0 || t->ax >= (int32_t)s->width))
+        reanchor(t, gouraud ? g : NULL, tp, t->ax < 0 ? 0 : (int32_t)s->width - 1); /* g: set up when Gouraud */
+    got = zl_tri_orig_planes(s, tri, t->ax, t->row, gouraud && !persp_colour, poly->light, &z, col);
+    if (got == 0)
+        return;
+    zl_tri_set_planes(t, g, a, b, c, &z, (got & 2) ? col : NULL, !zl_style_needs_planes(sty));
+    if (planes)
+        (void)zl_tri_orig_texplanes(s, sty, tri, t, poly_wmin(poly), tp, persp_colour ? g->c : NULL);
 }
 
 int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly, unsigned k,
@@ -454,7 +496,7 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
         t->rgb[1] = flat.g;
         t->rgb[2] = flat.b;
         if (poly->clipped) {
-            zl_tri_orig_piece(s, sty, tri, poly, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], t, g);
+            zl_tri_orig_piece(s, sty, tri, poly, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], t, g, tp);
             off = zl_tri_offset_plane(&t->z, sty);
         } else {
             off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);

@@ -151,7 +151,10 @@ static void stage_setup(const scene *s, const zl_context *ctx)
         for (k = 1; k + 1 < poly.n; k++) {
             zl_active tri;
             zl_gouraud g;
-            (void)zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state, W, H);
+            /* a piece of a clipped triangle takes the original's planes, as in zl_draw_mesh */
+            if (zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state, W, H) &&
+                poly.clipped)
+                zl_tri_orig_piece(&src, NULL, t, &poly, &poly.v[0], &poly.v[k], &poly.v[k + 1], &tri, &g, NULL);
         }
     }
 }
@@ -178,6 +181,8 @@ static void stage_rows(const scene *s, const zl_context *ctx, uint32_t *counts)
             int more;
             if (!zl_tri_setup(&tri, &g, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &ctx->state, W, H))
                 continue;
+            if (poly.clipped)
+                zl_tri_orig_piece(&src, NULL, t, &poly, &poly.v[0], &poly.v[k], &poly.v[k + 1], &tri, &g, NULL);
             if (counts != NULL)
                 counts[0]++;
             if (counts == NULL && !ss.gouraud) {

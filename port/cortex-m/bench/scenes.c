@@ -41,16 +41,22 @@ static void identity_like(zl_mat4 *m, zl_fixed sx, zl_fixed tx, zl_fixed tz)
     m->m[11] = tz;
 }
 
-static int camera_view(zl_mat4 *mvp, zl_mat4 *view, zl_vec3 eye)
+/* The benchmark camera, with the near plane at near_z (0.1 but in bunny_clip). */
+static int camera_view_near(zl_mat4 *mvp, zl_mat4 *view, zl_vec3 eye, zl_fixed near_z)
 {
     zl_mat4 proj;
     zl_vec3 target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
-    if (zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(60)), ZL_FX_INT(SCENE_W) / SCENE_H,
-                            ZL_FX_ONE / 10, ZL_FX_INT(100)) != ZL_OK ||
+    if (zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(60)), ZL_FX_INT(SCENE_W) / SCENE_H, near_z,
+                            ZL_FX_INT(100)) != ZL_OK ||
         zl_mat4_look_at(view, eye, target, up) != ZL_OK)
         return -1;
     zl_mat4_mul(mvp, &proj, view);
     return 0;
+}
+
+static int camera_view(zl_mat4 *mvp, zl_mat4 *view, zl_vec3 eye)
+{
+    return camera_view_near(mvp, view, eye, ZL_FX_ONE / 10);
 }
 
 /* The perspective camera; with exact != 0 the state gets its near and far
@@ -230,6 +236,15 @@ int scene_make(scene *s, int which)
     }
     case SCENE_TEXTURED:
         return textured_scene(s);
+    case SCENE_BUNNY_CLIP: {
+        zl_mat4 view;
+        zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2};
+        if (scene_make(s, SCENE_BUNNY) != 0)
+            return -1;
+        s->name = "bunny_clip";
+        s->state.cull = ZL_CULL_NONE; /* the cut-open model's inside shows */
+        return camera_view_near(&s->mvp, &view, eye, ZL_FX_ONE * 345 / 100);
+    }
     default:
         return -1;
     }

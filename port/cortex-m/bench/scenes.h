@@ -20,6 +20,11 @@
  *                vertex colours Gouraud-interpolated
  *   bunny_exact  the benchmark scene with zl_state near_z = 0.1, far_z = 100:
  *                the exact depth mapping (zline.h, Pseudodepth), its cost
+ *   bunny_clip   the benchmark scene with the near plane at 3.45, just in
+ *                front of the bunny's centre and no culling: the near
+ *                plane cuts the model through the middle (198 of its 3674
+ *                triangles cross it; their pieces take the original
+ *                triangles' planes) and its inside shows
  *   tetra        (golden test only) a vertex-coloured model close to the
  *                camera: near-plane clipping and Gouraud shading
  *   textured     (golden test only, issue 15) floor.obj (texture coordinates
@@ -42,7 +47,7 @@
 
 enum {
     SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_BUNNY_EXACT, SCENE_TETRA, SCENE_BUNNY_SMOOTH,
-    SCENE_TEXTURED, SCENE_COUNT
+    SCENE_TEXTURED, SCENE_BUNNY_CLIP, SCENE_COUNT
 };
 
 /* The most meshes drawn after the first one (styled scenes). */
