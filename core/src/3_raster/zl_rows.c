@@ -159,6 +159,127 @@ void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, in
     }
 }
 
+/* ---------------------------------------- small Gouraud triangles */
+
+/* Whether Q16 colour steppers c stepped by dc stay within 0 .. 255 (Q16)
+ * over n pixels: then the span's pixels need no clamp (zl_span_gouraud's
+ * own test, gouraud_fast). */
+static ZL_ALWAYS_INLINE int colours_in_range(const uint32_t *c, const uint32_t *dc, int32_t n)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        uint32_t e = c[k] + (uint32_t)(n - 1) * dc[k]; /* |(n - 1) dc| < 2^31 on a short span */
+        if (c[k] >= (256u << 16) || e >= (256u << 16))
+            return 0;
+    }
+    return 1;
+}
+
+/* A short Gouraud span (RGB565, test func with writes), colours in range:
+ * zl_span_gouraud's pixels (pack565 of the Q16 steppers). */
+static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
+                                           const uint32_t *c, const uint32_t *dc, unsigned func)
+{
+    uint32_t r = c[0], g = c[1], b = c[2];
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = z >> 14; /* unclamped: see tiny_rows */
+        if (depth_pass(func, d, zb[i])) {
+            zb[i] = (uint16_t)d;
+            cp[i] = (uint16_t)(((r >> 8) & 0xF800u) | ((g >> 13) & 0x07E0u) | (b >> 19));
+        }
+        z += dz;
+        r += dc[0];
+        g += dc[1];
+        b += dc[2];
+    }
+}
+
+/* Rows [j, j_end) of a small Gouraud triangle between its long edge and one
+ * short edge, as tiny_rows; the colour planes' row values in cr. Each span
+ * starts its colours as row_span does (attr_at's clamp, then Q16 with the
+ * rounding half): 32-bit values, exact at covered pixels (see
+ * zl_tiny_gouraud_setup). Returns the long edge's N after them. */
+static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
+                                                  int long_left, int32_t j, int32_t j_end, int32_t nl,
+                                                  const zl_tiny_edge *se, uint8_t *color, int32_t color_stride,
+                                                  uint8_t *depth, int32_t depth_stride, uint32_t *zrow,
+                                                  uint32_t *cr)
+{
+    const zl_tiny *tt = &tg->t;
+    const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
+    int32_t ns = se->n;
+    uint32_t zr = *zrow;
+    color += (size_t)j * (size_t)color_stride;
+    depth += (size_t)j * (size_t)depth_stride;
+    for (; j < j_end; j++) {
+        int32_t x0, x1;
+        tiny_cols(nl, dl, ns, ds, long_left, width, &x0, &x1);
+        if (x0 < x1) {
+            uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
+            int32_t v = (int32_t)(zr + (uint32_t)(x0 - tt->ax) * tt->zdx), n = x1 - x0;
+            uint32_t zq, c[3];
+            int k;
+            v = v < tt->zlo ? tt->zlo : (v > tt->zhi ? tt->zhi : v);
+            zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
+            for (k = 0; k < 3; k++) {
+                int32_t cv = (int32_t)(cr[k] + (uint32_t)(x0 - tt->ax) * tg->cdx[k]);
+                cv = cv < 0 ? 0 : (cv > (255 << ZL_ATTR_FRAC) ? (255 << ZL_ATTR_FRAC) : cv);
+                c[k] = ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
+            }
+            if (n <= ZL_SHORT_SPAN && colours_in_range(c, tg->dc16, n))
+                gouraud_short(cp, zb, n, zq, tt->dz14, c, tg->dc16, func);
+            else
+                zl_span_gouraud(ss, (uint8_t *)cp, zb, n, zq, tt->dz14, c, tg->dc16);
+        }
+        nl += il;
+        ns += is;
+        zr += tt->zdy;
+        cr[0] += tg->cdy[0];
+        cr[1] += tg->cdy[1];
+        cr[2] += tg->cdy[2];
+        color += color_stride;
+        depth += depth_stride;
+    }
+    *zrow = zr;
+    return nl;
+}
+
+static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
+                                               int long_left, uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                               int32_t depth_stride)
+{
+    const zl_tiny *tt = &tg->t;
+    uint32_t zrow = tt->zr, cr[3];
+    int32_t nl = tt->lng.n;
+    cr[0] = tg->cr[0];
+    cr[1] = tg->cr[1];
+    cr[2] = tg->cr[2];
+    if (tt->first < tt->mid)
+        nl = tiny_gouraud_rows(tg, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
+                               depth_stride, &zrow, cr);
+    if (tt->mid < tt->end)
+        (void)tiny_gouraud_rows(tg, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
+                                depth_stride, &zrow, cr);
+}
+
+void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
+                          uint8_t *depth, int32_t depth_stride)
+{
+    /* func and the side of the long edge as constants: four loops */
+    if (ss->func == ZL_LESS) {
+        if (tg->t.long_left)
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 1, color, color_stride, depth, depth_stride);
+        else
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 0, color, color_stride, depth, depth_stride);
+    } else {
+        if (tg->t.long_left)
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 1, color, color_stride, depth, depth_stride);
+        else
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 0, color, color_stride, depth, depth_stride);
+    }
+}
+
 int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth)
 {
     return color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&

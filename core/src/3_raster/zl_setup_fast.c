@@ -206,38 +206,32 @@ static void tiny_depth(zl_tiny *tt, const zl_attr *z, uint32_t zlo, uint32_t zhi
     tt->dz14 = (uint32_t)zl_floor_shift64(z->dx, ZL_ATTR_FRAC - 14);
 }
 
-static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b,
-                                       const zl_cached_vertex *c, uint16_t width, uint16_t height)
+/* tiny_setup on v (sorted by y here), its plane frame in *f (kept for more
+ * planes: zl_tiny_gouraud_setup). */
+static ZL_ALWAYS_INLINE int tiny_setup_frame(zl_tiny *tt, const zl_cached_vertex **v, small_frame *f,
+                                             uint16_t height)
 {
-    const zl_cached_vertex *v[3], *v0, *v1, *v2;
+    const zl_cached_vertex *v0, *v1, *v2;
     int32_t first, end, mid, ax, d1, d2, cross;
     uint32_t zlo, zhi;
-    small_frame f;
     zl_attr z;
-    /* zl_tri_classify's column test is left out: a triangle entirely left or
-     * right of the target clamps every span to nothing in the row loop, so
-     * it draws the same nothing, and on-screen meshes save the test. */
-    (void)width;
-    v[0] = a;
-    v[1] = b;
-    v[2] = c;
     if (!cached_rows(v, height, &first, &mid, &end))
         return 0;
     v0 = v[0];
     v1 = v[1];
     v2 = v[2];
-    f.dx1 = v1->x - v0->x;
-    f.dy1 = v1->y - v0->y;
-    f.dx2 = v2->x - v0->x;
-    f.dy2 = v2->y - v0->y;
+    f->dx1 = v1->x - v0->x;
+    f->dy1 = v1->y - v0->y;
+    f->dx2 = v2->x - v0->x;
+    f->dy2 = v2->y - v0->y;
     /* Every |x| below 2^13 and a height below 2^13 subpixels: then each edge's
      * N = (xt - 8) dy + (16 j + 8 - yt) dx, on its rows, stays below
      * 2^13 (2^13 + 8 + 2^14) < 2^28 in magnitude, the cross product below
      * 2^29, and 32-bit arithmetic is exact. */
     zlo = v0->z < v1->z ? (v0->z < v2->z ? v0->z : v2->z) : (v1->z < v2->z ? v1->z : v2->z);
     zhi = v0->z > v1->z ? (v0->z > v2->z ? v0->z : v2->z) : (v1->z > v2->z ? v1->z : v2->z);
-    if (a->x <= -8192 || a->x >= 8192 || b->x <= -8192 || b->x >= 8192 || c->x <= -8192 || c->x >= 8192 ||
-        f.dy2 >= 8192 || zhi - zlo >= (1u << 25)) /* (tiny_depth's bound) */
+    if (v0->x <= -8192 || v0->x >= 8192 || v1->x <= -8192 || v1->x >= 8192 || v2->x <= -8192 || v2->x >= 8192 ||
+        f->dy2 >= 8192 || zhi - zlo >= (1u << 25)) /* (tiny_depth's bound) */
         return -1;
     d1 = (int32_t)(v1->z - v0->z); /* below 2^25 in magnitude */
     d2 = (int32_t)(v2->z - v0->z);
@@ -246,9 +240,9 @@ static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, c
         tiny_edge_init(&tt->up, v0->x, v0->y, v1->x, v1->y, first);
     if (mid < end)
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
-    cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
-    ax = small_frame_anchor(&f, v0, first, cross);
-    if (!plane_small(&z, &f, v0->z, d1, d2))
+    cross = f->dx1 * f->dy2 - f->dx2 * f->dy1;
+    ax = small_frame_anchor(f, v0, first, cross);
+    if (!plane_small(&z, f, v0->z, d1, d2))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
     tt->ax = ax;
@@ -259,10 +253,68 @@ static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, c
     return 1;
 }
 
+static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                       const zl_cached_vertex *c, uint16_t width, uint16_t height)
+{
+    const zl_cached_vertex *v[3];
+    small_frame f;
+    /* zl_tri_classify's column test is left out: a triangle entirely left or
+     * right of the target clamps every span to nothing in the row loop, so
+     * it draws the same nothing, and on-screen meshes save the test. */
+    (void)width;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    return tiny_setup_frame(tt, v, &f, height);
+}
+
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height)
 {
     return tiny_setup(tt, a, b, c, width, height);
+}
+
+/* ---------------------------------------- small Gouraud triangles, frame mode */
+
+/*
+ * zl_tiny_setup for a Gouraud triangle: its edges and depth as zl_tiny, and
+ * the three colour planes the general set-up makes (zl_tri_setup_rows:
+ * vertex colour << 16 into plane_setup, which plane_small matches), kept
+ * modulo 2^32 like the depth plane. At a pixel the triangle covers a
+ * colour plane lies within 2^10 (Q20) of the vertex range, so its 32-bit
+ * value there is the exact one and the row loop clamps it as attr_at
+ * clamps. col[k] are the 3 bytes (r, g, b) of vertex v[k]. Same returns as
+ * zl_tiny_setup.
+ */
+int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v, const uint8_t *const *col,
+                          uint16_t height)
+{
+    const zl_cached_vertex *s[3];
+    const uint8_t *c[3];
+    small_frame f;
+    int set, k, ch;
+    s[0] = v[0];
+    s[1] = v[1];
+    s[2] = v[2];
+    /* read only when set (|cross| >= 2^16), which GCC cannot follow here */
+    f.inv.d = f.inv.v = 0;
+    f.inv.shift = 0;
+    set = tiny_setup_frame(&tg->t, s, &f, height);
+    if (set <= 0)
+        return set;
+    for (k = 0; k < 3; k++) /* the colours in the sorted order */
+        c[k] = s[k] == v[0] ? col[0] : (s[k] == v[1] ? col[1] : col[2]);
+    for (ch = 0; ch < 3; ch++) {
+        int32_t c0 = (int32_t)c[0][ch] << 16;
+        zl_attr a;
+        if (!plane_small(&a, &f, c0, ((int32_t)c[1][ch] << 16) - c0, ((int32_t)c[2][ch] << 16) - c0))
+            return -1;
+        tg->cr[ch] = (uint32_t)(uint64_t)a.row;
+        tg->cdy[ch] = (uint32_t)(uint64_t)a.dy;
+        tg->cdx[ch] = (uint32_t)(uint64_t)a.dx;
+        tg->dc16[ch] = step32(a.dx, ZL_ATTR_FRAC - 16);
+    }
+    return 1;
 }
 
 /* ---------------------------------------- small flat triangles, scanline mode */
