@@ -201,7 +201,7 @@ static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n
  * rounding half): 32-bit values, exact at covered pixels (see
  * zl_tiny_gouraud_setup). Returns the long edge's N after them. */
 static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
-                                                  int long_left, int32_t j, int32_t j_end, int32_t nl,
+                                                  int long_left, int inner, int32_t j, int32_t j_end, int32_t nl,
                                                   const zl_tiny_edge *se, uint8_t *color, int32_t color_stride,
                                                   uint8_t *depth, int32_t depth_stride, uint32_t *zrow,
                                                   uint32_t *cr)
@@ -224,10 +224,11 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
             zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
             for (k = 0; k < 3; k++) {
                 int32_t cv = (int32_t)(cr[k] + (uint32_t)(x0 - tt->ax) * tg->cdx[k]);
-                cv = cv < 0 ? 0 : (cv > (255 << ZL_ATTR_FRAC) ? (255 << ZL_ATTR_FRAC) : cv);
+                if (!inner) /* else no clamp can bite (zl_tiny_gouraud.inner) */
+                    cv = cv < 0 ? 0 : (cv > (255 << ZL_ATTR_FRAC) ? (255 << ZL_ATTR_FRAC) : cv);
                 c[k] = ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
             }
-            if (n <= ZL_SHORT_SPAN && colours_in_range(c, tg->dc16, n))
+            if (n <= ZL_SHORT_SPAN && (inner || colours_in_range(c, tg->dc16, n)))
                 gouraud_short(cp, zb, n, zq, tt->dz14, c, tg->dc16, func);
             else
                 zl_span_gouraud(ss, (uint8_t *)cp, zb, n, zq, tt->dz14, c, tg->dc16);
@@ -246,7 +247,7 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
 }
 
 static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
-                                               int long_left, uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                               int long_left, int inner, uint8_t *color, int32_t color_stride, uint8_t *depth,
                                                int32_t depth_stride)
 {
     const zl_tiny *tt = &tg->t;
@@ -256,27 +257,38 @@ static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const 
     cr[1] = tg->cr[1];
     cr[2] = tg->cr[2];
     if (tt->first < tt->mid)
-        nl = tiny_gouraud_rows(tg, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
+        nl = tiny_gouraud_rows(tg, ss, func, long_left, inner, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
                                depth_stride, &zrow, cr);
     if (tt->mid < tt->end)
-        (void)tiny_gouraud_rows(tg, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
+        (void)tiny_gouraud_rows(tg, ss, func, long_left, inner, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
                                 depth_stride, &zrow, cr);
+}
+
+/* tiny_gouraud_draw with `inner` a constant: without the span checks when
+ * it applies, with them else (and out of line: the rarer case). */
+static ZL_NOINLINE void tiny_gouraud_draw_checked(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
+                                                  uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                                  int32_t depth_stride)
+{
+    tiny_gouraud_draw(tg, ss, func, tg->t.long_left, 0, color, color_stride, depth, depth_stride);
 }
 
 void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
                           uint8_t *depth, int32_t depth_stride)
 {
     /* func and the side of the long edge as constants: four loops */
-    if (ss->func == ZL_LESS) {
+    if (!tg->inner)
+        tiny_gouraud_draw_checked(tg, ss, ss->func, color, color_stride, depth, depth_stride);
+    else if (ss->func == ZL_LESS) {
         if (tg->t.long_left)
-            tiny_gouraud_draw(tg, ss, ZL_LESS, 1, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 1, 1, color, color_stride, depth, depth_stride);
         else
-            tiny_gouraud_draw(tg, ss, ZL_LESS, 0, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 0, 1, color, color_stride, depth, depth_stride);
     } else {
         if (tg->t.long_left)
-            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 1, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 1, 1, color, color_stride, depth, depth_stride);
         else
-            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 0, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 0, 1, color, color_stride, depth, depth_stride);
     }
 }
 

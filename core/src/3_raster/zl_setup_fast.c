@@ -277,6 +277,77 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
 /* ---------------------------------------- small Gouraud triangles, frame mode */
 
 /*
+ * round_div_small (zl_raster.h) of x = n 2^k, for |n| < 2^28, 20 <= k <= 24
+ * and c < 2^16, in 32-bit divisions: floor((|x| + bias) / c) digit by
+ * digit, n / c for the bits above 2^k, then the remainder (below c) with 16
+ * bits and k - 16 bits shifted in. 0 when the quotient might reach 2^31
+ * (then the caller takes plane_small, whose limit is 2^32).
+ */
+static ZL_ALWAYS_INLINE int round_div_shift(int32_t n, unsigned k, uint32_t c, int32_t *q)
+{
+    uint32_t m = n < 0 ? 0u - (uint32_t)n : (uint32_t)n;
+    uint32_t bias = n < 0 ? c - 1u - c / 2u : c / 2u;
+    uint32_t q0 = m / c, r = m - q0 * c, q1, u;
+    if (q0 >= (1u << (31 - k)) - 1u)
+        return 0;
+    q1 = (r << 16) / c;
+    r = (r << 16) - q1 * c;
+    u = (q0 << k) + (q1 << (k - 16)) + ((r << (k - 16)) + bias) / c;
+    *q = n < 0 ? -(int32_t)u : (int32_t)u;
+    return 1;
+}
+
+/*
+ * plane_small's colour plane (vertex colours c0, c0 + e1, c0 + e2 in 8-bit
+ * units, each << 16) on a small frame with |cross| below 2^16, in 32 bits:
+ * the gradients' factor 2^16 taken out of the products, which then fit
+ * (|e| <= 255, |dx|, |dy| < 2^14, |ox|, |oy| <= 16). The row value modulo
+ * 2^32. 0 when a quotient is out of round_div_shift's range.
+ */
+static ZL_ALWAYS_INLINE int colour_plane_small(const small_frame *f, int32_t c0, int32_t e1, int32_t e2,
+                                               uint32_t *row, uint32_t *dx, uint32_t *dy)
+{
+    int32_t ga = e1 * f->dy2 - e2 * f->dy1, gb = f->dx1 * e2 - f->dx2 * e1, qx, qy, off;
+    if (f->neg) {
+        ga = -ga;
+        gb = -gb;
+    }
+    if (!round_div_shift(ga, ZL_SUB_BITS + ZL_ATTR_FRAC, f->c32, &qx) ||
+        !round_div_shift(gb, ZL_SUB_BITS + ZL_ATTR_FRAC, f->c32, &qy) ||
+        !round_div_shift(ga * f->ox + gb * f->oy, ZL_ATTR_FRAC, f->c32, &off))
+        return 0;
+    *dx = (uint32_t)qx;
+    *dy = (uint32_t)qy;
+    *row = ((uint32_t)c0 << ZL_ATTR_FRAC) + (uint32_t)off + (uint32_t)f->rows * (uint32_t)qy;
+    return 1;
+}
+
+/* Colour channel ch of the sorted vertices' colours c into tg: 0 when it
+ * needs the general set-up. */
+static ZL_ALWAYS_INLINE int colour_plane(zl_tiny_gouraud *tg, const small_frame *f, const uint8_t *const *c, int ch)
+{
+    int32_t c0 = c[0][ch], e1 = (int32_t)c[1][ch] - c0, e2 = (int32_t)c[2][ch] - c0;
+    zl_attr a;
+    if (f->c32 < 65536u && colour_plane_small(f, c0, e1, e2, &tg->cr[ch], &tg->cdx[ch], &tg->cdy[ch])) {
+        tg->dc16[ch] = (uint32_t)zl_floor_shift32((int32_t)tg->cdx[ch], ZL_ATTR_FRAC - 16);
+        return 1;
+    }
+    if (!plane_small(&a, f, (int64_t)c0 << 16, e1 * 65536, e2 * 65536))
+        return 0;
+    tg->cr[ch] = (uint32_t)(uint64_t)a.row;
+    tg->cdy[ch] = (uint32_t)(uint64_t)a.dy;
+    tg->cdx[ch] = (uint32_t)(uint64_t)a.dx;
+    tg->dc16[ch] = step32(a.dx, ZL_ATTR_FRAC - 16);
+    return 1;
+}
+
+/* Whether the 3 bytes at c all lie in 1 .. 254. */
+static ZL_ALWAYS_INLINE int bytes_inner(const uint8_t *c)
+{
+    return (uint8_t)(c[0] - 1u) < 254u && (uint8_t)(c[1] - 1u) < 254u && (uint8_t)(c[2] - 1u) < 254u;
+}
+
+/*
  * zl_tiny_setup for a Gouraud triangle: its edges and depth as zl_tiny, and
  * the three colour planes the general set-up makes (zl_tri_setup_rows:
  * vertex colour << 16 into plane_setup, which plane_small matches), kept
@@ -304,16 +375,17 @@ int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v,
         return set;
     for (k = 0; k < 3; k++) /* the colours in the sorted order */
         c[k] = s[k] == v[0] ? col[0] : (s[k] == v[1] ? col[1] : col[2]);
-    for (ch = 0; ch < 3; ch++) {
-        int32_t c0 = (int32_t)c[0][ch] << 16;
-        zl_attr a;
-        if (!plane_small(&a, &f, c0, ((int32_t)c[1][ch] << 16) - c0, ((int32_t)c[2][ch] << 16) - c0))
+    /*
+     * inner: at a covered pixel the plane is within 2^10 (Q20) of the exact
+     * mix, which lies in the vertex range, and a short span's Q16 stepper
+     * drifts by under one unit a pixel: with every vertex colour in
+     * 1 .. 254 no value the row loop clamps (attr_at's 0 .. 255) or checks
+     * (zl_span_gouraud's 0 .. 256 << 16) can come near its bounds.
+     */
+    tg->inner = bytes_inner(col[0]) && bytes_inner(col[1]) && bytes_inner(col[2]);
+    for (ch = 0; ch < 3; ch++)
+        if (!colour_plane(tg, &f, c, ch))
             return -1;
-        tg->cr[ch] = (uint32_t)(uint64_t)a.row;
-        tg->cdy[ch] = (uint32_t)(uint64_t)a.dy;
-        tg->cdx[ch] = (uint32_t)(uint64_t)a.dx;
-        tg->dc16[ch] = step32(a.dx, ZL_ATTR_FRAC - 16);
-    }
     return 1;
 }
 
