@@ -180,7 +180,7 @@ static ZL_ALWAYS_INLINE int colours_in_range(const uint32_t *c, const uint32_t *
 static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
                                            const uint32_t *c, const uint32_t *dc, unsigned func)
 {
-    uint32_t r = c[0], g = c[1], b = c[2];
+    uint32_t r = c[0], g = c[1], b = c[2], dr = dc[0], dg = dc[1], db = dc[2];
     int32_t i;
     for (i = 0; i < n; i++) {
         uint32_t d = z >> 14; /* unclamped: see tiny_rows */
@@ -189,16 +189,28 @@ static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n
             cp[i] = (uint16_t)(((r >> 8) & 0xF800u) | ((g >> 13) & 0x07E0u) | (b >> 19));
         }
         z += dz;
-        r += dc[0];
-        g += dc[1];
-        b += dc[2];
+        r += dr;
+        g += dg;
+        b += db;
     }
 }
 
+/* The Q16 start (rounding half added) of a colour plane whose 32-bit value
+ * at the span's first pixel is v: attr_at's clamp to 0 .. 255, unless
+ * `inner` says it cannot bite. */
+static ZL_ALWAYS_INLINE uint32_t colour_start(uint32_t v, int inner)
+{
+    int32_t cv = (int32_t)v;
+    if (!inner)
+        cv = cv < 0 ? 0 : (cv > (255 << ZL_ATTR_FRAC) ? (255 << ZL_ATTR_FRAC) : cv);
+    return ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
+}
+
 /* Rows [j, j_end) of a small Gouraud triangle between its long edge and one
- * short edge, as tiny_rows; the colour planes' row values in cr. Each span
- * starts its colours as row_span does (attr_at's clamp, then Q16 with the
- * rounding half): 32-bit values, exact at covered pixels (see
+ * short edge, as tiny_rows; the colour planes' values at (ax, row) in
+ * cr[0..2] (scalars in the loop, so that they stay in registers). Each
+ * span starts its colours as row_span does (attr_at's clamp, then Q16 with
+ * the rounding half): 32-bit values, exact at covered pixels (see
  * zl_tiny_gouraud_setup). Returns the long edge's N after them. */
 static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
                                                   int long_left, int inner, int32_t j, int32_t j_end, int32_t nl,
@@ -209,7 +221,7 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
     const zl_tiny *tt = &tg->t;
     const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
     int32_t ns = se->n;
-    uint32_t zr = *zrow;
+    uint32_t zr = *zrow, rr = cr[0], gr = cr[1], br = cr[2];
     color += (size_t)j * (size_t)color_stride;
     depth += (size_t)j * (size_t)depth_stride;
     for (; j < j_end; j++) {
@@ -217,17 +229,14 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
         tiny_cols(nl, dl, ns, ds, long_left, width, &x0, &x1);
         if (x0 < x1) {
             uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
-            int32_t v = (int32_t)(zr + (uint32_t)(x0 - tt->ax) * tt->zdx), n = x1 - x0;
+            uint32_t dx = (uint32_t)(x0 - tt->ax);
+            int32_t v = (int32_t)(zr + dx * tt->zdx), n = x1 - x0;
             uint32_t zq, c[3];
-            int k;
             v = v < tt->zlo ? tt->zlo : (v > tt->zhi ? tt->zhi : v);
             zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
-            for (k = 0; k < 3; k++) {
-                int32_t cv = (int32_t)(cr[k] + (uint32_t)(x0 - tt->ax) * tg->cdx[k]);
-                if (!inner) /* else no clamp can bite (zl_tiny_gouraud.inner) */
-                    cv = cv < 0 ? 0 : (cv > (255 << ZL_ATTR_FRAC) ? (255 << ZL_ATTR_FRAC) : cv);
-                c[k] = ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
-            }
+            c[0] = colour_start(rr + dx * tg->cdx[0], inner);
+            c[1] = colour_start(gr + dx * tg->cdx[1], inner);
+            c[2] = colour_start(br + dx * tg->cdx[2], inner);
             if (n <= ZL_SHORT_SPAN && (inner || colours_in_range(c, tg->dc16, n)))
                 gouraud_short(cp, zb, n, zq, tt->dz14, c, tg->dc16, func);
             else
@@ -236,13 +245,16 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
         nl += il;
         ns += is;
         zr += tt->zdy;
-        cr[0] += tg->cdy[0];
-        cr[1] += tg->cdy[1];
-        cr[2] += tg->cdy[2];
+        rr += tg->cdy[0];
+        gr += tg->cdy[1];
+        br += tg->cdy[2];
         color += color_stride;
         depth += depth_stride;
     }
     *zrow = zr;
+    cr[0] = rr;
+    cr[1] = gr;
+    cr[2] = br;
     return nl;
 }
 
