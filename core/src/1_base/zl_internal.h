@@ -363,8 +363,6 @@ typedef struct {
 typedef struct {
     zl_tiny t;
     uint32_t cr[3], cdy[3], cdx[3], dc16[3];
-    int inner; /* every vertex colour byte in 1 .. 254: no clamp or range
-                  check can change a pixel (zl_tiny_gouraud_setup) */
 } zl_tiny_gouraud;
 /* zl_tiny_setup of cached vertices v[0..2] with vertex colours col[0..2]
  * (3 bytes each), and the colour planes zl_tri_setup_rows makes: same

@@ -161,26 +161,19 @@ void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, in
 
 /* ---------------------------------------- small Gouraud triangles */
 
-/* Whether Q16 colour steppers c stepped by dc stay within 0 .. 255 (Q16)
- * over n pixels: then the span's pixels need no clamp (zl_span_gouraud's
- * own test, gouraud_fast). */
-static ZL_ALWAYS_INLINE int colours_in_range(const uint32_t *c, const uint32_t *dc, int32_t n)
-{
-    int k;
-    for (k = 0; k < 3; k++) {
-        uint32_t e = c[k] + (uint32_t)(n - 1) * dc[k]; /* |(n - 1) dc| < 2^31 on a short span */
-        if (c[k] >= (256u << 16) || e >= (256u << 16))
-            return 0;
-    }
-    return 1;
-}
-
-/* A short Gouraud span (RGB565, test func with writes), colours in range:
- * zl_span_gouraud's pixels (pack565 of the Q16 steppers). */
+/*
+ * A short Gouraud span (RGB565, test func with writes) of a small triangle:
+ * zl_span_gouraud's pixels (pack565 of the Q16 steppers) without its range
+ * checks, which cannot fail here. Its pixels are inside the triangle, where
+ * the exact mix lies in 0 .. 255; the start (clamped to that range, see
+ * colour_start) is within 2^10 (Q20) of it, 2^6 in Q16, and each of at most
+ * ZL_SHORT_SPAN - 1 steps within one Q16 unit of the exact gradient: every
+ * value stays within 2^7 of exact * 2^16 + 2^15, far inside 0 .. 2^24.
+ */
 static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
-                                           const uint32_t *c, const uint32_t *dc, unsigned func)
+                                           uint32_t r, uint32_t g, uint32_t b, const uint32_t *dc, unsigned func)
 {
-    uint32_t r = c[0], g = c[1], b = c[2], dr = dc[0], dg = dc[1], db = dc[2];
+    uint32_t dr = dc[0], dg = dc[1], db = dc[2];
     int32_t i;
     for (i = 0; i < n; i++) {
         uint32_t d = z >> 14; /* unclamped: see tiny_rows */
@@ -195,14 +188,26 @@ static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n
     }
 }
 
+/* A longer span of a small Gouraud triangle: zl_span_gouraud, out of line
+ * so that the short spans' colours stay in registers. */
+static ZL_NOINLINE void gouraud_long(const zl_span_state *ss, uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z,
+                                     uint32_t dz, uint32_t r, uint32_t g, uint32_t b, const uint32_t *dc)
+{
+    uint32_t c[3];
+    c[0] = r;
+    c[1] = g;
+    c[2] = b;
+    zl_span_gouraud(ss, (uint8_t *)cp, zb, n, z, dz, c, dc);
+}
+
 /* The Q16 start (rounding half added) of a colour plane whose 32-bit value
- * at the span's first pixel is v: attr_at's clamp to 0 .. 255, unless
- * `inner` says it cannot bite. */
-static ZL_ALWAYS_INLINE uint32_t colour_start(uint32_t v, int inner)
+ * at the span's first pixel is v: attr_at's clamp to 0 .. 255, one compare
+ * when it does not bite. */
+static ZL_ALWAYS_INLINE uint32_t colour_start(uint32_t v)
 {
     int32_t cv = (int32_t)v;
-    if (!inner)
-        cv = cv < 0 ? 0 : (cv > (255 << ZL_ATTR_FRAC) ? (255 << ZL_ATTR_FRAC) : cv);
+    if (v > (255u << ZL_ATTR_FRAC))
+        cv = cv < 0 ? 0 : (255 << ZL_ATTR_FRAC);
     return ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
 }
 
@@ -213,7 +218,7 @@ static ZL_ALWAYS_INLINE uint32_t colour_start(uint32_t v, int inner)
  * the rounding half): 32-bit values, exact at covered pixels (see
  * zl_tiny_gouraud_setup). Returns the long edge's N after them. */
 static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
-                                                  int long_left, int inner, int32_t j, int32_t j_end, int32_t nl,
+                                                  int long_left, int32_t j, int32_t j_end, int32_t nl,
                                                   const zl_tiny_edge *se, uint8_t *color, int32_t color_stride,
                                                   uint8_t *depth, int32_t depth_stride, uint32_t *zrow,
                                                   uint32_t *cr)
@@ -231,16 +236,16 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
             uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
             uint32_t dx = (uint32_t)(x0 - tt->ax);
             int32_t v = (int32_t)(zr + dx * tt->zdx), n = x1 - x0;
-            uint32_t zq, c[3];
+            uint32_t zq, r, g, b;
             v = v < tt->zlo ? tt->zlo : (v > tt->zhi ? tt->zhi : v);
             zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
-            c[0] = colour_start(rr + dx * tg->cdx[0], inner);
-            c[1] = colour_start(gr + dx * tg->cdx[1], inner);
-            c[2] = colour_start(br + dx * tg->cdx[2], inner);
-            if (n <= ZL_SHORT_SPAN && (inner || colours_in_range(c, tg->dc16, n)))
-                gouraud_short(cp, zb, n, zq, tt->dz14, c, tg->dc16, func);
+            r = colour_start(rr + dx * tg->cdx[0]);
+            g = colour_start(gr + dx * tg->cdx[1]);
+            b = colour_start(br + dx * tg->cdx[2]);
+            if (n <= ZL_SHORT_SPAN)
+                gouraud_short(cp, zb, n, zq, tt->dz14, r, g, b, tg->dc16, func);
             else
-                zl_span_gouraud(ss, (uint8_t *)cp, zb, n, zq, tt->dz14, c, tg->dc16);
+                gouraud_long(ss, cp, zb, n, zq, tt->dz14, r, g, b, tg->dc16);
         }
         nl += il;
         ns += is;
@@ -259,7 +264,7 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
 }
 
 static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
-                                               int long_left, int inner, uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                               int long_left, uint8_t *color, int32_t color_stride, uint8_t *depth,
                                                int32_t depth_stride)
 {
     const zl_tiny *tt = &tg->t;
@@ -269,38 +274,27 @@ static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const 
     cr[1] = tg->cr[1];
     cr[2] = tg->cr[2];
     if (tt->first < tt->mid)
-        nl = tiny_gouraud_rows(tg, ss, func, long_left, inner, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
+        nl = tiny_gouraud_rows(tg, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
                                depth_stride, &zrow, cr);
     if (tt->mid < tt->end)
-        (void)tiny_gouraud_rows(tg, ss, func, long_left, inner, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
+        (void)tiny_gouraud_rows(tg, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
                                 depth_stride, &zrow, cr);
-}
-
-/* tiny_gouraud_draw with `inner` a constant: without the span checks when
- * it applies, with them else (and out of line: the rarer case). */
-static ZL_NOINLINE void tiny_gouraud_draw_checked(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
-                                                  uint8_t *color, int32_t color_stride, uint8_t *depth,
-                                                  int32_t depth_stride)
-{
-    tiny_gouraud_draw(tg, ss, func, tg->t.long_left, 0, color, color_stride, depth, depth_stride);
 }
 
 void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
                           uint8_t *depth, int32_t depth_stride)
 {
     /* func and the side of the long edge as constants: four loops */
-    if (!tg->inner)
-        tiny_gouraud_draw_checked(tg, ss, ss->func, color, color_stride, depth, depth_stride);
-    else if (ss->func == ZL_LESS) {
+    if (ss->func == ZL_LESS) {
         if (tg->t.long_left)
-            tiny_gouraud_draw(tg, ss, ZL_LESS, 1, 1, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 1, color, color_stride, depth, depth_stride);
         else
-            tiny_gouraud_draw(tg, ss, ZL_LESS, 0, 1, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 0, color, color_stride, depth, depth_stride);
     } else {
         if (tg->t.long_left)
-            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 1, 1, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 1, color, color_stride, depth, depth_stride);
         else
-            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 0, 1, color, color_stride, depth, depth_stride);
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 0, color, color_stride, depth, depth_stride);
     }
 }
 

@@ -341,12 +341,6 @@ static ZL_ALWAYS_INLINE int colour_plane(zl_tiny_gouraud *tg, const small_frame 
     return 1;
 }
 
-/* Whether the 3 bytes at c all lie in 1 .. 254. */
-static ZL_ALWAYS_INLINE int bytes_inner(const uint8_t *c)
-{
-    return (uint8_t)(c[0] - 1u) < 254u && (uint8_t)(c[1] - 1u) < 254u && (uint8_t)(c[2] - 1u) < 254u;
-}
-
 /*
  * zl_tiny_setup for a Gouraud triangle: its edges and depth as zl_tiny, and
  * the three colour planes the general set-up makes (zl_tri_setup_rows:
@@ -375,14 +369,7 @@ int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v,
         return set;
     for (k = 0; k < 3; k++) /* the colours in the sorted order */
         c[k] = s[k] == v[0] ? col[0] : (s[k] == v[1] ? col[1] : col[2]);
-    /*
-     * inner: at a covered pixel the plane is within 2^10 (Q20) of the exact
-     * mix, which lies in the vertex range, and a short span's Q16 stepper
-     * drifts by under one unit a pixel: with every vertex colour in
-     * 1 .. 254 no value the row loop clamps (attr_at's 0 .. 255) or checks
-     * (zl_span_gouraud's 0 .. 256 << 16) can come near its bounds.
-     */
-    tg->inner = bytes_inner(col[0]) && bytes_inner(col[1]) && bytes_inner(col[2]);
+
     for (ch = 0; ch < 3; ch++)
         if (!colour_plane(tg, &f, c, ch))
             return -1;
