@@ -359,10 +359,12 @@ typedef struct {
 } zl_tiny;
 /* A small Gouraud triangle of frame mode: its zl_tiny, and each colour
  * plane (r, g, b; Q20 of 0..255, modulo 2^32) at (ax, first) with its
- * change per row and per pixel, and its Q16 span step (step32). */
+ * change per row and per pixel, its Q16 span step (step32) and lane step
+ * (zl_span.h's lane colour). */
 typedef struct {
     zl_tiny t;
     uint32_t cr[3], cdy[3], cdx[3], dc16[3];
+    int32_t dl[3];
 } zl_tiny_gouraud;
 /* zl_tiny_setup of cached vertices v[0..2] with vertex colours col[0..2]
  * (3 bytes each), and the colour planes zl_tri_setup_rows makes: same

@@ -163,23 +163,28 @@ void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, in
 
 /*
  * A short Gouraud span (RGB565, test func with writes) of a small triangle:
- * zl_span_gouraud's pixels (pack565 of the Q16 steppers) without its range
- * checks, which cannot fail here. Its pixels are inside the triangle, where
- * the exact mix lies in 0 .. 255; the start (clamped to that range, see
- * colour_start) is within 2^10 (Q20) of it, 2^6 in Q16, and each of at most
- * ZL_SHORT_SPAN - 1 steps within one Q16 unit of the exact gradient: every
- * value stays within 2^7 of exact * 2^16 + 2^15, far inside 0 .. 2^24.
+ * zl_span_gouraud's pixels (lane colour, zl_span.h: lanes (c >> 8) stepped
+ * by dl) without its range checks, which cannot fail here. Its pixels are
+ * inside the triangle, where the exact mix lies in 0 .. 255; the start
+ * (clamped to that range, see colour_start) is within 2^10 (Q20) of it,
+ * 2^6 in Q16, and each of at most ZL_SHORT_SPAN - 1 steps within one Q16
+ * unit of the exact gradient: every Q16 value stays within 2^7 of
+ * exact * 2^16 + 2^15, far inside 0 .. 2^24, and every lane within a few
+ * units of exact * 256 + 128, inside 0 .. 0xFFFF.
  */
 static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
-                                           uint32_t r, uint32_t g, uint32_t b, const uint32_t *dc, unsigned func)
+                                           uint32_t r, uint32_t g, uint32_t b, const int32_t *dl, unsigned func)
 {
-    uint32_t dr = dc[0], dg = dc[1], db = dc[2];
+    uint32_t dr = (uint32_t)dl[0], dg = (uint32_t)dl[1], db = (uint32_t)dl[2];
     int32_t i;
+    r >>= 8;
+    g >>= 8;
+    b >>= 8;
     for (i = 0; i < n; i++) {
         uint32_t d = z >> 14; /* unclamped: see tiny_rows */
         if (depth_pass(func, d, zb[i])) {
             zb[i] = (uint16_t)d;
-            cp[i] = (uint16_t)(((r >> 8) & 0xF800u) | ((g >> 13) & 0x07E0u) | (b >> 19));
+            cp[i] = (uint16_t)zl_lane565(r, g, b);
         }
         z += dz;
         r += dr;
@@ -243,7 +248,7 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
             g = colour_start(gr + dx * tg->cdx[1]);
             b = colour_start(br + dx * tg->cdx[2]);
             if (n <= ZL_SHORT_SPAN)
-                gouraud_short(cp, zb, n, zq, tt->dz14, r, g, b, tg->dc16, func);
+                gouraud_short(cp, zb, n, zq, tt->dz14, r, g, b, tg->dl, func);
             else
                 gouraud_long(ss, cp, zb, n, zq, tt->dz14, r, g, b, tg->dc16);
         }

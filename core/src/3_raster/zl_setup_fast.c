@@ -370,9 +370,11 @@ int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v,
     for (k = 0; k < 3; k++) /* the colours in the sorted order */
         c[k] = s[k] == v[0] ? col[0] : (s[k] == v[1] ? col[1] : col[2]);
 
-    for (ch = 0; ch < 3; ch++)
+    for (ch = 0; ch < 3; ch++) {
         if (!colour_plane(tg, &f, c, ch))
             return -1;
+        tg->dl[ch] = zl_lane_step(tg->dc16[ch]);
+    }
     return 1;
 }
 
