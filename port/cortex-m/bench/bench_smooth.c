@@ -16,7 +16,8 @@
  *             frame (bench.c's bunny_vcache); its own budget line
  * frame and scanline give the same image (their colour hashes are printed
  * and compared). Each count is checked against budgets.txt. Prints
- * "INTERVAL tag bunny_smooth key instructions".
+ * "INTERVAL tag bunny_smooth key instructions from to" (from, to: its marks,
+ * for profile.sh: TAGS=smooth-O2 SCENE=bunny_smooth KEY=draw).
  */
 #include <stdio.h>
 #include <string.h>
@@ -45,9 +46,11 @@ static uint32_t fnv1a(const void *p, size_t n, uint32_t h)
     return h;
 }
 
-static int report(const char *key, uint32_t insns)
+/* The interval between marks m and m + 1, with its marks (for profile.sh). */
+static int report(const char *key, unsigned m)
 {
-    printf("INTERVAL %s bunny_smooth %s %lu\n", BENCH_TAG, key, (unsigned long)insns);
+    uint32_t insns = bench_between(m, m + 1);
+    printf("INTERVAL %s bunny_smooth %s %lu %u %u\n", BENCH_TAG, key, (unsigned long)insns, m, m + 1);
     return bench_check_budget(BENCH_TAG, BENCH_BUDGETS, key, insns);
 }
 
@@ -84,7 +87,7 @@ int main(void)
     mark();
     if (st != ZL_OK)
         return 102;
-    failed += report("light", bench_between(m, m + 1));
+    failed += report("light", m);
 
     /* frame mode: light + clear + draw */
     memset(&tg, 0, sizeof tg);
@@ -108,7 +111,7 @@ int main(void)
     mark();
     if (st != ZL_OK)
         return 104;
-    failed += report("frame", bench_between(m, m + 1));
+    failed += report("frame", m);
     h_frame = fnv1a(color_buf, sizeof color_buf, 2166136261u);
     /* the frame without the lighting: the bunny with per-vertex colours */
     m = bench_stamp_count();
@@ -118,7 +121,7 @@ int main(void)
     mark();
     if (st != ZL_OK)
         return 108;
-    failed += report("draw", bench_between(m, m + 1));
+    failed += report("draw", m);
 
     /* scanline mode: light + the banded frame (capacities planned untimed) */
     memset(&cfg, 0, sizeof cfg);
@@ -150,7 +153,7 @@ int main(void)
     mark();
     if (st != ZL_DONE)
         return 107;
-    failed += report("scanline", bench_between(m, m + 1));
+    failed += report("scanline", m);
     /* the same bands again, untimed, for the image hash */
     zl_frame_begin(&f, &cfg, work, zl_frame_bytes(&cfg), bg, 65535);
     zl_frame_add_mesh(&f, &s.mesh, &s.mvp, &s.state);
