@@ -488,6 +488,10 @@ static void lanes_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow
 {
     unsigned func = ss->func;
     int32_t i;
+    /* Without a depth buffer zl_span_state_init chose ZL_ALWAYS and no
+     * writes: said here too, so that no path to zrow[i] sees NULL. */
+    if (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS))
+        return;
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
         if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
@@ -565,6 +569,8 @@ static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_
     unsigned func = ss->func, bpp = ss->bpp;
     int32_t i;
     uint8_t pix[3] = {0, 0, 0};
+    if (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS))
+        return; /* as in lanes_generic */
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
         if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
