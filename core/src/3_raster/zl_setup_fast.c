@@ -298,22 +298,21 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
 /* ---------------------------------------- small Gouraud triangles, frame mode */
 
 /*
- * round_div_small (zl_raster.h) of x = n 2^k, for |n| < 2^28, 20 <= k <= 24
- * and c < 2^16, in 32-bit divisions: floor((|x| + bias) / c) digit by
- * digit, n / c for the bits above 2^k, then the remainder (below c) with 16
- * bits and k - 16 bits shifted in. 0 when the quotient might reach 2^31
- * (then the caller takes plane_small, whose limit is 2^32).
+ * round_div_small (zl_raster.h) of x = n 2^k, for |n| 2^(k - 16) < 2^31,
+ * 16 <= k <= 24 and c < 2^16, in two 32-bit divisions: floor((|x| + bias)
+ * / c) in 16-bit digits, (|n| << (k - 16)) / c for the high one, then the
+ * remainder (below c) with 16 bits shifted in (below c 2^16 <= 2^32 with
+ * the bias). 0 when the quotient might reach 2^31 (then the caller takes
+ * plane_small, whose limit is 2^32).
  */
 static ZL_ALWAYS_INLINE int round_div_shift(int32_t n, unsigned k, uint32_t c, int32_t *q)
 {
-    uint32_t m = n < 0 ? 0u - (uint32_t)n : (uint32_t)n;
+    uint32_t m = (n < 0 ? 0u - (uint32_t)n : (uint32_t)n) << (k - 16);
     uint32_t bias = n < 0 ? c - 1u - c / 2u : c / 2u;
-    uint32_t q0 = m / c, r = m - q0 * c, q1, u;
-    if (q0 >= (1u << (31 - k)) - 1u)
+    uint32_t q0 = m / c, u;
+    if (q0 >= (1u << 15) - 1u)
         return 0;
-    q1 = (r << 16) / c;
-    r = (r << 16) - q1 * c;
-    u = (q0 << k) + (q1 << (k - 16)) + ((r << (k - 16)) + bias) / c;
+    u = (q0 << 16) + (((m - q0 * c) << 16) + bias) / c;
     *q = n < 0 ? -(int32_t)u : (int32_t)u;
     return 1;
 }
@@ -322,8 +321,10 @@ static ZL_ALWAYS_INLINE int round_div_shift(int32_t n, unsigned k, uint32_t c, i
  * plane_small's colour plane (vertex colours c0, c0 + e1, c0 + e2 in 8-bit
  * units, each << 16) on a small frame with |cross| below 2^16, in 32 bits:
  * the gradients' factor 2^16 taken out of the products, which then fit
- * (|e| <= 255, |dx|, |dy| < 2^14, |ox|, |oy| <= 16). The row value modulo
- * 2^32. 0 when a quotient is out of round_div_shift's range.
+ * (|e| <= 255, |dx| < 2^14, dy < 2^13, |ox|, |oy| <= 8: |ga| < 2^22,
+ * |gb| < 2^23, the offset's numerator below 2^27, each shifted by k - 16
+ * below 2^31). The row value modulo 2^32. 0 when a quotient is out of
+ * round_div_shift's range.
  */
 static ZL_ALWAYS_INLINE int colour_plane_small(const small_frame *f, int32_t c0, int32_t e1, int32_t e2,
                                                uint32_t *row, uint32_t *dx, uint32_t *dy)
