@@ -20,9 +20,10 @@
  * primitives of one level are common (LESS against LEQUAL). Coverage comes
  * from zt_ref (triangles) or the LINE RULE written out here (lines); the
  * depth test, the write mask and the colour mask are applied per pixel by
- * the model; a Gouraud pixel's channels are the exact barycentric mix of the
- * vertex colours at the pixel centre, within GOURAUD_TOL, then packed the
- * way the format defines (RGB565 keeps the top 5/6/5 bits). Depth values
+ * the model; a Gouraud pixel's channels are the exact barycentric mix e of
+ * the vertex colours at the pixel centre, within GOURAUD_TOL in RGB888, and
+ * in RGB565 the top 5/6/5 bits of a value within -0.6 .. +1.6 of e (zline.h,
+ * Gouraud colour: lane colour). Depth values
  * must lie within the contract's +-1 of the level, and one level must be
  * stored as one value everywhere (same plane, same depth).
  */
@@ -163,8 +164,10 @@ static int clamp255(int64_t v)
 }
 
 /* Gouraud: the exact mix of the vertex colours at pixel (i, j)'s centre,
- * from the snapped vertices (half-subpixel units), as an 8-bit range. */
-static void gouraud_range(const zl_fixed *p, const uint8_t *vc, int32_t i, int32_t j, int *lo, int *hi)
+ * from the snapped vertices (half-subpixel units), as an 8-bit range: the
+ * contract's for RGB888, or (lane) for RGB565 the range whose top bits the
+ * stored channel may be, floor(e - 0.6) .. floor(e + 1.6). */
+static void gouraud_range(const zl_fixed *p, const uint8_t *vc, int32_t i, int32_t j, int lane, int *lo, int *hi)
 {
     int64_t x[3], y[3], e[3], area, cx = zt_centre2(i), cy = zt_centre2(j);
     unsigned k, c;
@@ -186,12 +189,17 @@ static void gouraud_range(const zl_fixed *p, const uint8_t *vc, int32_t i, int32
         int64_t num = 0;
         for (k = 0; k < 3; k++)
             num += e[k] * vc[k * 3 + c];
-        lo[c] = clamp255(zt_floor_div(num, area) - GOURAUD_TOL);
-        hi[c] = clamp255(zt_ceil_div(num, area) + GOURAUD_TOL);
+        if (lane) {
+            lo[c] = clamp255(zt_floor_div(10 * num - 6 * area, 10 * area));
+            hi[c] = clamp255(zt_floor_div(10 * num + 16 * area, 10 * area));
+        } else {
+            lo[c] = clamp255(zt_floor_div(num, area) - GOURAUD_TOL);
+            hi[c] = clamp255(zt_ceil_div(num, area) + GOURAUD_TOL);
+        }
     }
 }
 
-static void model_triangles(const zl_state *st)
+static void model_triangles(const zl_state *st, zl_format fmt)
 {
     unsigned t, k;
     int32_t i, j;
@@ -205,7 +213,7 @@ static void model_triangles(const zl_state *st)
                 if (!zt_tri_covers(&tri, i, j))
                     continue;
                 if (st->shading == ZL_SHADE_GOURAUD) {
-                    gouraud_range(p, &sc.vcol[t * 9], i, j, lo, hi);
+                    gouraud_range(p, &sc.vcol[t * 9], i, j, fmt != ZL_FORMAT_RGB888, lo, hi);
                 } else {
                     for (k = 0; k < 3; k++)
                         lo[k] = hi[k] = sc.fcol[t * 3 + k];
@@ -438,7 +446,7 @@ static int run_case(zl_format fmt, unsigned path, int lines, const zl_state *st)
     if (lines)
         model_lines(st);
     else
-        model_triangles(st);
+        model_triangles(st, fmt);
     if (path == PATH_SCANLINE)
         render_scanline(fmt, st, lines);
     else

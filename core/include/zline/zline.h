@@ -79,9 +79,10 @@
  *   and far_z set 65535 (A + B / w) with w the clip w of that point. A
  *   pixel the snapped polygon covers just beyond the near or far plane
  *   gets 0 or 65535. When every vertex has w > 0, the Gouraud colour is
- *   within +-1 of the exact screen-linear interpolation of the vertex
- *   colours at the unsnapped projected vertices (times the light
- *   intensity / 255). Perspective-correct Gouraud colour and texture
+ *   within the Gouraud bound (below: +-1 in RGB888) of the exact
+ *   screen-linear interpolation of the vertex colours at the unsnapped
+ *   projected vertices (times the light intensity / 255).
+ *   Perspective-correct Gouraud colour and texture
  *   coordinates come from the same original planes: a / w and 1 / w are
  *   affine in the window position, and the span loops divide them per
  *   pixel as for an unclipped triangle, so perspective-correct colour is
@@ -105,6 +106,18 @@
  *   references by tests/host/test_clip_planes.c (depth, screen-linear
  *   colour), test_clip_attrs.c (perspective colour, textures) and
  *   test_clip_coverage.c (coverage: watertight, and pinned).
+ *
+ * Gouraud colour (screen-linear, state.shading ZL_SHADE_GOURAUD): at a
+ *   covered pixel each channel is the exact mix e (8-bit units, a real
+ *   number) of the vertex colours at the pixel centre, interpolated over the
+ *   snapped triangle (times the light intensity / 255 when light_on). RGB888
+ *   stores a value within +-1 of e. RGB565 and RGB565_BE store the top 5, 6,
+ *   5 bits of a value within -0.6 .. +1.6 of e, so each RGB565 channel is
+ *   within 1 of the exact floor(e / 8) (red, blue) or floor(e / 4) (green):
+ *   spans step the colour in 8.8 fixed point two pixels per 32-bit word
+ *   ("lane colour", zl_span.h), for speed. Checked against the exact
+ *   rational mix by tests/test_paths_match_reference.c and
+ *   tests/test_gouraud_bound.c (spans up to 1040 pixels).
  *
  * Order: triangles are drawn in submission order; the depth test decides
  *   per pixel. Frame mode and the scanline/band modes of zl_frame produce

@@ -368,6 +368,23 @@ typedef struct {
     int32_t ax, first, mid, end;
     int long_left;             /* the long edge bounds the spans on the left */
 } zl_tiny;
+/* A small Gouraud triangle of frame mode: its zl_tiny, and each colour
+ * plane (r, g, b; Q20 of 0..255, modulo 2^32) at (ax, first) with its
+ * change per row and per pixel, its Q16 span step (step32) and lane step
+ * (zl_span.h's lane colour). */
+typedef struct {
+    zl_tiny t;
+    uint32_t cr[3], cdy[3], cdx[3], dc16[3];
+    int32_t dl[3];
+} zl_tiny_gouraud;
+/* zl_tiny_setup of cached vertices v[0..2] with vertex colours col[0..2]
+ * (3 bytes each), and the colour planes zl_tri_setup_rows makes: same
+ * returns. */
+int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v, const uint8_t *const *col,
+                          uint16_t height);
+/* Draw it: exactly the pixels the general path writes for it (row_span). */
+void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
+                          uint8_t *depth, int32_t depth_stride);
 /* zl_tri_setup_flat's bounds and numbers as a zl_tiny: 1 set up, 0 not in
  * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,

@@ -159,6 +159,150 @@ void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, in
     }
 }
 
+/* ---------------------------------------- small Gouraud triangles */
+
+/*
+ * A short Gouraud span (RGB565, test func with writes) of a small triangle:
+ * zl_span_gouraud's pixels (lane colour, zl_span.h: lanes (c >> 8) stepped
+ * by dl) without its range checks, which cannot fail here. Its pixels are
+ * inside the triangle, where the exact mix lies in 0 .. 255; the start
+ * (clamped to that range, see colour_start) is within 2^10 (Q20) of it,
+ * 2^6 in Q16, and each of at most ZL_SHORT_SPAN - 1 steps within one Q16
+ * unit of the exact gradient: every Q16 value stays within 2^7 of
+ * exact * 2^16 + 2^15, far inside 0 .. 2^24, and every lane within a few
+ * units of exact * 256 + 128, inside 0 .. 0xFFFF.
+ */
+static ZL_ALWAYS_INLINE void gouraud_short(uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
+                                           uint32_t r, uint32_t g, uint32_t b, const int32_t *dl, unsigned func)
+{
+    uint32_t dr = (uint32_t)dl[0], dg = (uint32_t)dl[1], db = (uint32_t)dl[2];
+    int32_t i;
+    r >>= 8;
+    g >>= 8;
+    b >>= 8;
+    for (i = 0; i < n; i++) {
+        uint32_t d = z >> 14; /* unclamped: see tiny_rows */
+        if (depth_pass(func, d, zb[i])) {
+            zb[i] = (uint16_t)d;
+            cp[i] = (uint16_t)zl_lane565(r, g, b);
+        }
+        z += dz;
+        r += dr;
+        g += dg;
+        b += db;
+    }
+}
+
+/* A longer span of a small Gouraud triangle: zl_span_gouraud, out of line
+ * so that the short spans' colours stay in registers. */
+static ZL_NOINLINE void gouraud_long(const zl_span_state *ss, uint16_t *cp, uint16_t *zb, int32_t n, uint32_t z,
+                                     uint32_t dz, uint32_t r, uint32_t g, uint32_t b, const uint32_t *dc)
+{
+    uint32_t c[3];
+    c[0] = r;
+    c[1] = g;
+    c[2] = b;
+    zl_span_gouraud(ss, (uint8_t *)cp, zb, n, z, dz, c, dc);
+}
+
+/* The Q16 start (rounding half added) of a colour plane whose 32-bit value
+ * at the span's first pixel is v: attr_at's clamp to 0 .. 255, one compare
+ * when it does not bite. */
+static ZL_ALWAYS_INLINE uint32_t colour_start(uint32_t v)
+{
+    int32_t cv = (int32_t)v;
+    if (v > (255u << ZL_ATTR_FRAC))
+        cv = cv < 0 ? 0 : (255 << ZL_ATTR_FRAC);
+    return ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
+}
+
+/* Rows [j, j_end) of a small Gouraud triangle between its long edge and one
+ * short edge, as tiny_rows; the colour planes' values at (ax, row) in
+ * cr[0..2] (scalars in the loop, so that they stay in registers). Each
+ * span starts its colours as row_span does (attr_at's clamp, then Q16 with
+ * the rounding half): 32-bit values, exact at covered pixels (see
+ * zl_tiny_gouraud_setup). Returns the long edge's N after them. */
+static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
+                                                  int long_left, int32_t j, int32_t j_end, int32_t nl,
+                                                  const zl_tiny_edge *se, uint8_t *color, int32_t color_stride,
+                                                  uint8_t *depth, int32_t depth_stride, uint32_t *zrow,
+                                                  uint32_t *cr)
+{
+    const zl_tiny *tt = &tg->t;
+    const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
+    int32_t ns = se->n;
+    uint32_t zr = *zrow, rr = cr[0], gr = cr[1], br = cr[2];
+    color += (size_t)j * (size_t)color_stride;
+    depth += (size_t)j * (size_t)depth_stride;
+    for (; j < j_end; j++) {
+        int32_t x0, x1;
+        tiny_cols(nl, dl, ns, ds, long_left, width, &x0, &x1);
+        if (x0 < x1) {
+            uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
+            uint32_t dx = (uint32_t)(x0 - tt->ax);
+            int32_t v = (int32_t)(zr + dx * tt->zdx), n = x1 - x0;
+            uint32_t zq, r, g, b;
+            v = v < tt->zlo ? tt->zlo : (v > tt->zhi ? tt->zhi : v);
+            zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
+            r = colour_start(rr + dx * tg->cdx[0]);
+            g = colour_start(gr + dx * tg->cdx[1]);
+            b = colour_start(br + dx * tg->cdx[2]);
+            if (n <= ZL_SHORT_SPAN)
+                gouraud_short(cp, zb, n, zq, tt->dz14, r, g, b, tg->dl, func);
+            else
+                gouraud_long(ss, cp, zb, n, zq, tt->dz14, r, g, b, tg->dc16);
+        }
+        nl += il;
+        ns += is;
+        zr += tt->zdy;
+        rr += tg->cdy[0];
+        gr += tg->cdy[1];
+        br += tg->cdy[2];
+        color += color_stride;
+        depth += depth_stride;
+    }
+    *zrow = zr;
+    cr[0] = rr;
+    cr[1] = gr;
+    cr[2] = br;
+    return nl;
+}
+
+static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
+                                               int long_left, uint8_t *color, int32_t color_stride, uint8_t *depth,
+                                               int32_t depth_stride)
+{
+    const zl_tiny *tt = &tg->t;
+    uint32_t zrow = tt->zr, cr[3];
+    int32_t nl = tt->lng.n;
+    cr[0] = tg->cr[0];
+    cr[1] = tg->cr[1];
+    cr[2] = tg->cr[2];
+    if (tt->first < tt->mid)
+        nl = tiny_gouraud_rows(tg, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
+                               depth_stride, &zrow, cr);
+    if (tt->mid < tt->end)
+        (void)tiny_gouraud_rows(tg, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
+                                depth_stride, &zrow, cr);
+}
+
+void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
+                          uint8_t *depth, int32_t depth_stride)
+{
+    /* func and the side of the long edge as constants: four loops */
+    if (ss->func == ZL_LESS) {
+        if (tg->t.long_left)
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 1, color, color_stride, depth, depth_stride);
+        else
+            tiny_gouraud_draw(tg, ss, ZL_LESS, 0, color, color_stride, depth, depth_stride);
+    } else {
+        if (tg->t.long_left)
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 1, color, color_stride, depth, depth_stride);
+        else
+            tiny_gouraud_draw(tg, ss, ZL_LEQUAL, 0, color, color_stride, depth, depth_stride);
+    }
+}
+
 int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth)
 {
     return color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&

@@ -259,46 +259,53 @@ void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_
     }
 }
 
-static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
-                                 uint32_t dz, const uint32_t *c, const uint32_t *dc);
+/* ---------------------------------------- Gouraud spans */
 
-/* Gouraud into RGB565 with no clamping needed (checked per span): the
- * channels are packed straight from their Q16 steppers. `swap` stores the
- * byte-swapped value (RGB565_BE on a little-endian machine). */
-static inline void span_gouraud_565(unsigned func, int swap, uint16_t *crow, uint16_t *zrow, int32_t n,
-                                    uint32_t z, uint32_t dz, const uint32_t *c, const uint32_t *dc)
-{
-    uint32_t r = c[0], g = c[1], b = c[2];
-    int32_t i;
-    for (i = 0; i < n; i++) {
-        uint32_t d = z >> 14;
-        if (depth_pass(func, d, zrow[i])) {
-            uint32_t v = ((r >> 8) & 0xF800u) | ((g >> 13) & 0x07E0u) | (b >> 19);
-            zrow[i] = (uint16_t)d;
-            crow[i] = (uint16_t)(swap ? ((v >> 8) | (v << 8)) : v);
-        }
-        z += dz;
-        r += dc[0];
-        g += dc[1];
-        b += dc[2];
-    }
-}
-
-/* The RGB565 value of Q16 channels in range (below 256 << 16). red is the
- * mask 0xF800, passed as a value so that GCC keeps it in a register: then
- * red is one `and` with a shifted operand. Green needs no mask (g >> 18 has
- * no bits above its six) and blue none either, so the pack is four
- * instructions: and, shift, two orr with a shifted operand. */
-static ZL_ALWAYS_INLINE uint32_t pack565(uint32_t r, uint32_t g, uint32_t b, uint32_t red)
-{
-    return ((r >> 8) & red) | ((g >> 18) << 5) | (b >> 19);
-}
-
-/* The values of a Gouraud run (see zl_pair_run): depth y and colours c of
- * its first pixel, their steps, and the masks 0xFFFF0000 and 0xF800. */
+/* The lanes of a chunk (zl_span.h, lane colour): each channel's 8.8 value
+ * at its first pixel and its step per pixel. */
 typedef struct {
-    uint32_t y, dy, c[3], dc[3], hi, red;
+    uint32_t l[3];
+    int32_t d[3];
+} zl_lanes;
+
+/* The lanes of a chunk of n pixels from Q16 channels c (each below 2^24)
+ * with Q16 steps dc: 0 when one would leave 0 .. 0xFFFF (then the chunk
+ * takes the Q16 steppers, span_gouraud_generic). */
+static int lanes_init(zl_lanes *ln, const uint32_t *c, const uint32_t *dc, int32_t n)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        /* the caller's range check keeps (n - 1) |dc| below 2^24: no overflow */
+        int32_t l = (int32_t)(c[k] >> 8), d = zl_lane_step(dc[k]), e = l + (n - 1) * d;
+        if (e < 0 || e > 0xFFFF)
+            return 0;
+        ln->l[k] = (uint32_t)l;
+        ln->d[k] = d;
+    }
+    return 1;
+}
+
+/* The RGB565 pixel at k of a chunk. */
+static ZL_ALWAYS_INLINE uint32_t lanes_pixel(const zl_lanes *ln, uint32_t k)
+{
+    return zl_lane565(ln->l[0] + k * (uint32_t)ln->d[0], ln->l[1] + k * (uint32_t)ln->d[1],
+                      ln->l[2] + k * (uint32_t)ln->d[2]);
+}
+
+/* The values of a Gouraud run (see zl_pair_run): depth y and lane pairs c
+ * (pixel at the low half, the next at the high half) of its first pair,
+ * and their steps per pair. */
+typedef struct {
+    uint32_t y, dy, c[3], dc[3];
 } zl_gouraud_run;
+
+/* The RGB565 pair of lane pairs r, g, b: zl_lane565 of each half, each
+ * channel masked by an immediate (Thumb-2 encodes 0xF800F800 and
+ * 0xFC00FC00) and shifted into place by the orr that merges it. */
+static ZL_ALWAYS_INLINE uint32_t lane_pair(uint32_t r, uint32_t g, uint32_t b)
+{
+    return (r & 0xF800F800u) | ((g & 0xFC00FC00u) >> 5) | ((b & 0xF800F800u) >> 11);
+}
 
 /* Gouraud RGB565 on an exact span from 4-byte aligned rows, a pair per step:
  * one depth load, two compares, one depth store and one colour store. As
@@ -308,17 +315,13 @@ static ZL_ALWAYS_INLINE int32_t gouraud_pair_run(unsigned func, uint16_t *cend, 
                                                  const zl_gouraud_run *s)
 {
     uint32_t y = s->y, dy = s->dy, r = s->c[0], g = s->c[1], b = s->c[2];
-    uint32_t dr = s->dc[0], dg = s->dc[1], db = s->dc[2], red = s->red;
+    uint32_t dr = s->dc[0], dg = s->dc[1], db = s->dc[2];
     for (; i != 0; i += 2) {
-        uint32_t y1 = y + dy, w = pair_load(zend + i), v;
+        uint32_t y1 = y + dy, w = pair_load(zend + i);
         if (!pair_pass(func, y, y1, w))
             return i;
-        pair_store(zend + i, ((y1 >> 16) << 16) | (y >> 16));
-        v = pack565(r, g, b, red);
-        r += dr;
-        g += dg;
-        b += db;
-        pair_store(cend + i, v | (pack565(r, g, b, red) << 16));
+        pair_store(zend + i, (y1 & 0xFFFF0000u) | (y >> 16));
+        pair_store(cend + i, lane_pair(r, g, b));
         r += dr;
         g += dg;
         b += db;
@@ -327,6 +330,79 @@ static ZL_ALWAYS_INLINE int32_t gouraud_pair_run(unsigned func, uint16_t *cend, 
     return 0;
 }
 
+/*
+ * On ARMv7E-M (Cortex-M4/M7: PKHTB) with GCC or Clang the runs are written
+ * in assembly: the C loop above, instruction for instruction, with every
+ * value in a register (GCC's own loop reloads a mask from memory and spends
+ * three instructions on the depth pair, 28 a pair instead of 21). The same
+ * arithmetic, so the same pixels: the host tests run the C loop, the
+ * Cortex-M tests this one, and golden_host_equals_target compares them.
+ * Arguments: the pair's colour and depth pointers, the number of pairs
+ * (> 0) and the run; returns the number of pairs left when a test fails
+ * (nothing of that pair written), 0 at the end.
+ */
+#if !defined(ZL_NO_ASM) && defined(__GNUC__) && defined(__ARM_ARCH_7EM__) && defined(__ARM_FEATURE_DSP)
+#define ZL_GOURAUD_ASM 1
+/* One pair of the run (r0 colour, r1 depth pointer; y, dy, r, g, b and
+ * their steps in r4 .. r11, zl_gouraud_run's order): the tests TEST1 and
+ * TEST2 branch to 2f on a failing pixel, before anything is written. */
+#define ZL_GOURAUD_PAIR_ASM(TEST1, TEST2)                                                                          \
+    "ldr lr, [r1]\n\t" TEST1 "add r12, r4, r5\n\t"                                                                 \
+    "lsr r3, lr, #16\n\t"                                                                                          \
+    "cmp r3, r12, lsr #16\n\t" TEST2 "pkhtb lr, r12, r4, asr #16\n\t"                                              \
+    "str lr, [r1], #4\n\t"                                                                                         \
+    "and r3, r6, #0xF800F800\n\t"                                                                                  \
+    "and lr, r7, #0xFC00FC00\n\t"                                                                                  \
+    "orr r3, r3, lr, lsr #5\n\t"                                                                                   \
+    "and lr, r8, #0xF800F800\n\t"                                                                                  \
+    "orr r3, r3, lr, lsr #11\n\t"                                                                                  \
+    "str r3, [r0], #4\n\t"                                                                                         \
+    "add r4, r12, r5\n\t"                                                                                          \
+    "add r6, r6, r9\n\t"                                                                                           \
+    "add r7, r7, r10\n\t"                                                                                          \
+    "add r8, r8, r11\n\t"
+/* The run: two pairs a loop step (an odd count enters at the second),
+ * until the depth pointer reaches the end (r2); returns the depth pointer
+ * of the failing pair, or the end. */
+#define ZL_GOURAUD_RUN_ASM(TEST1, TEST2)                                                                           \
+    __asm__ volatile("push {r4-r11, lr}\n\t"                                                                       \
+                     "ldm r3, {r4-r11}\n\t"                                                                       \
+                     "sub r3, r2, r1\n\t"                                                                         \
+                     "tst r3, #4\n\t"                                                                             \
+                     "bne 3f\n"                                                                                    \
+                     "1:\n\t" ZL_GOURAUD_PAIR_ASM(TEST1, TEST2) "3:\n\t" ZL_GOURAUD_PAIR_ASM(TEST1, TEST2)       \
+                     "cmp r1, r2\n\t"                                                                             \
+                     "bne 1b\n"                                                                                    \
+                     "2:\n\t"                                                                                     \
+                     "mov r0, r1\n\t"                                                                             \
+                     "pop {r4-r11, pc}")
+/* LESS: y0 < w_lo << 16, then w_hi > y1_hi; LEQUAL: y0_hi <= w_lo, then
+ * w_hi >= y1_hi (pair_pass). naked: the body is the whole function, its
+ * parameters in r0 .. r3. */
+__attribute__((naked, noinline)) static uint16_t *gouraud_pairs_less_asm(
+    uint16_t *c __attribute__((unused)), uint16_t *z __attribute__((unused)),
+    const uint16_t *zend __attribute__((unused)), const zl_gouraud_run *s __attribute__((unused)))
+{
+    ZL_GOURAUD_RUN_ASM("cmp r4, lr, lsl #16\n\tbhs 2f\n\t", "bls 2f\n\t");
+}
+
+__attribute__((naked, noinline)) static uint16_t *gouraud_pairs_lequal_asm(
+    uint16_t *c __attribute__((unused)), uint16_t *z __attribute__((unused)),
+    const uint16_t *zend __attribute__((unused)), const zl_gouraud_run *s __attribute__((unused)))
+{
+    ZL_GOURAUD_RUN_ASM("uxth r3, lr\n\tcmp r3, r4, lsr #16\n\tblo 2f\n\t", "blo 2f\n\t");
+}
+
+static int32_t gouraud_pair_run_less(uint16_t *cend, uint16_t *zend, int32_t i, const zl_gouraud_run *s)
+{
+    return (int32_t)(gouraud_pairs_less_asm(cend + i, zend + i, zend, s) - zend);
+}
+
+static int32_t gouraud_pair_run_lequal(uint16_t *cend, uint16_t *zend, int32_t i, const zl_gouraud_run *s)
+{
+    return (int32_t)(gouraud_pairs_lequal_asm(cend + i, zend + i, zend, s) - zend);
+}
+#else
 static ZL_NOINLINE int32_t gouraud_pair_run_less(uint16_t *cend, uint16_t *zend, int32_t i,
                                                  const zl_gouraud_run *s)
 {
@@ -338,117 +414,152 @@ static ZL_NOINLINE int32_t gouraud_pair_run_lequal(uint16_t *cend, uint16_t *zen
 {
     return gouraud_pair_run(ZL_LEQUAL, cend, zend, i, s);
 }
+#endif
 
-/* One pixel of the Gouraud pair loops: depth d, channels r, g, b. */
-static ZL_ALWAYS_INLINE void gouraud_pixel(unsigned func, uint16_t *c, uint16_t *zp, uint32_t d,
-                                           const uint32_t *rgb)
+/* One pixel of the lane loops: depth d, RGB565 value v. */
+static ZL_ALWAYS_INLINE void lane_pixel(unsigned func, uint16_t *c, uint16_t *zp, uint32_t d, uint32_t v)
 {
     if (depth_pass(func, d, *zp)) {
         *zp = (uint16_t)d;
-        *c = (uint16_t)pack565(rgb[0], rgb[1], rgb[2], 0xF800u);
+        *c = (uint16_t)v;
     }
 }
 
-/* The values at pixel k of a span: start + k*step, which modulo 2^32 is
- * the same as stepping k times. */
-static void gouraud_at(uint32_t k, const uint32_t *c, const uint32_t *dc, uint32_t *out)
+/* The run state at pixel k of a chunk. */
+static void run_at(zl_gouraud_run *s, const zl_lanes *ln, uint32_t k, uint32_t z, uint32_t dz)
 {
     int j;
-    for (j = 0; j < 3; j++)
-        out[j] = c[j] + k * dc[j];
+    s->y = (z + k * dz) << 2;
+    for (j = 0; j < 3; j++) {
+        uint32_t lo = ln->l[j] + k * (uint32_t)ln->d[j];
+        s->c[j] = lo * 0x10001u + ((uint32_t)ln->d[j] << 16);
+    }
 }
 
-/* n (even) pixels of an exact Gouraud span from 4-byte aligned rows: runs
- * of passing pairs, and between them a failing pair pixel by pixel. */
-static void span_gouraud_pairs(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
-                               const uint32_t *c, const uint32_t *dc)
+/* n (even) pixels from pixel k0 of a chunk, on 4-byte aligned rows: runs of
+ * passing pairs, and between them a failing pair pixel by pixel. */
+static void lanes_pairs(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t k0, uint32_t z,
+                        uint32_t dz, const zl_lanes *ln)
 {
     zl_gouraud_run s;
     uint16_t *cend = crow + n, *zend = zrow + n;
     int32_t i = -n;
+    int j;
     s.dy = dz << 2;
-    s.dc[0] = dc[0];
-    s.dc[1] = dc[1];
-    s.dc[2] = dc[2];
-    s.hi = 0xFFFF0000u;
-    s.red = 0xF800u;
-    while (i != 0) {
-        uint32_t at = (uint32_t)(i + n), rgb[3];
-        s.y = (z + at * dz) << 2;
-        gouraud_at(at, c, dc, s.c);
+    for (j = 0; j < 3; j++)
+        s.dc[j] = ((uint32_t)ln->d[j] << 1) * 0x10001u;
+    run_at(&s, ln, k0, z, dz);
+    for (;;) {
+        uint32_t k;
         i = func == ZL_LESS ? gouraud_pair_run_less(cend, zend, i, &s) : gouraud_pair_run_lequal(cend, zend, i, &s);
         if (i == 0)
-            break;
-        at = (uint32_t)(i + n);
-        gouraud_at(at, c, dc, rgb);
-        gouraud_pixel(func, cend + i, zend + i, (z + at * dz) >> 14, rgb);
-        gouraud_at(at + 1, c, dc, rgb);
-        gouraud_pixel(func, cend + i + 1, zend + i + 1, (z + (at + 1) * dz) >> 14, rgb);
+            return;
+        k = k0 + (uint32_t)(i + n);
+        lane_pixel(func, cend + i, zend + i, (z + k * dz) >> 14, lanes_pixel(ln, k));
+        lane_pixel(func, cend + i + 1, zend + i + 1, (z + (k + 1) * dz) >> 14, lanes_pixel(ln, k + 1));
         i += 2;
+        if (i == 0)
+            return;
+        run_at(&s, ln, k + 2, z, dz);
     }
 }
 
-/* Exact Gouraud span into RGB565 in native byte order: as span_flat_exact,
- * an aligning pixel, pairs, a last odd pixel when the rows allow pairs. */
-static void span_gouraud_exact(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
-                               const uint32_t *c, const uint32_t *dc)
+/* A chunk in native RGB565 from rows whose alignment allows pairs, depth
+ * test func (LESS or LEQUAL) with writes, z exact: an aligning pixel,
+ * pairs, a last odd pixel. */
+static void lanes_fast(unsigned func, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                       const zl_lanes *ln)
 {
-    uint32_t c0[3], rgb[3];
-    if (!little_endian() || (((uintptr_t)crow ^ (uintptr_t)zrow) & 2u) != 0) {
-        if (func == ZL_LESS)
-            span_gouraud_565(ZL_LESS, 0, crow, zrow, n, z, dz, c, dc);
-        else
-            span_gouraud_565(ZL_LEQUAL, 0, crow, zrow, n, z, dz, c, dc);
-        return;
-    }
-    gouraud_at(0, c, dc, c0);
+    uint32_t k = 0;
     if (((uintptr_t)zrow & 2u) != 0) {
-        gouraud_pixel(func, crow, zrow, z >> 14, c0);
-        gouraud_at(1, c, dc, c0);
-        crow++;
-        zrow++;
-        n--;
+        lane_pixel(func, crow, zrow, z >> 14, lanes_pixel(ln, 0));
+        k = 1;
+    }
+    if (n - (int32_t)k >= 2)
+        lanes_pairs(func, crow + k, zrow + k, (n - (int32_t)k) & ~1, k, z, dz, ln);
+    if (((n - (int32_t)k) & 1) != 0)
+        lane_pixel(func, crow + n - 1, zrow + n - 1, (z + (uint32_t)(n - 1) * dz) >> 14, lanes_pixel(ln, (uint32_t)(n - 1)));
+}
+
+/* A chunk in either RGB565 byte order under any span state: the lane
+ * pixels one by one (zl_span_flat's generic loop). */
+static void lanes_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                          const zl_lanes *ln)
+{
+    unsigned func = ss->func;
+    int32_t i;
+    /* Without a depth buffer zl_span_state_init chose ZL_ALWAYS and no
+     * writes: said here too, so that no path to zrow[i] sees NULL. */
+    if (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS))
+        return;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {
+            uint32_t v = lanes_pixel(ln, (uint32_t)i);
+            uint8_t pix[2];
+            if (ss->zwrite)
+                zrow[i] = (uint16_t)d;
+            if (ss->format == ZL_FORMAT_RGB565_BE) {
+                pix[0] = (uint8_t)(v >> 8);
+                pix[1] = (uint8_t)v;
+            } else {
+                uint16_t v16 = (uint16_t)v;
+                memcpy(pix, &v16, 2);
+            }
+            put_pixel(crow + (size_t)i * 2u, 2, pix, ss->keep);
+        }
         z += dz;
     }
-    span_gouraud_pairs(func, crow, zrow, n & ~1, z, dz, c0, dc);
-    if (n & 1) {
-        gouraud_at((uint32_t)(n - 1), c0, dc, rgb);
-        gouraud_pixel(func, crow + n - 1, zrow + n - 1, (z + (uint32_t)(n - 1) * dz) >> 14, rgb);
-    }
 }
 
-/* The Gouraud fast path applies: RGB565, every channel, LESS or LEQUAL with
- * depth write, an aligned row, and no stepper leaving its range. */
-static int gouraud_fast(const zl_span_state *ss, const uint8_t *crow, int32_t n, uint32_t z, uint32_t dz,
-                        const uint32_t *c, const uint32_t *dc)
+static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                 uint32_t dz, const uint32_t *c, const uint32_t *dc);
+
+/* Whether a chunk can take lanes_fast: native RGB565 with every channel,
+ * LESS or LEQUAL with depth writes, rows that pair up, z exact. Only
+ * speed depends on it (addresses included): the pixels do not. */
+static int lanes_fast_ok(const zl_span_state *ss, const uint8_t *crow, const uint16_t *zrow, int32_t n, uint32_t z,
+                         uint32_t dz)
 {
-    int k;
-    if (ss->bpp != 2 || !ss->zwrite || ss->keep[0] != 0 || ss->keep[1] != 0 || ((uintptr_t)crow & 1u) != 0 ||
-        (ss->func != ZL_LESS && ss->func != ZL_LEQUAL) || !stays_below(z, dz, n, 65536u << 14))
-        return 0;
-    for (k = 0; k < 3; k++)
-        if (!stays_below(c[k], dc[k], n, 256u << 16))
-            return 0;
-    return 1;
+    return ss->format == ZL_FORMAT_RGB565 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+           (ss->func == ZL_LESS || ss->func == ZL_LEQUAL) && little_endian() && ((uintptr_t)crow & 1u) == 0 &&
+           (((uintptr_t)crow ^ (uintptr_t)zrow) & 2u) == 0 && stays_below(z, dz, n, 65536u << 14);
+}
+
+/* A chunk of an RGB565 span (either byte order): lanes when they fit. */
+static void gouraud_chunk(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
+                          const uint32_t *c, const uint32_t *dc)
+{
+    zl_lanes ln;
+    if (!lanes_init(&ln, c, dc, n))
+        span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
+    else if (zrow != NULL && lanes_fast_ok(ss, crow, zrow, n, z, dz))
+        lanes_fast(ss->func, (uint16_t *)(void *)crow, zrow, n, z, dz, &ln);
+    else
+        lanes_generic(ss, crow, zrow, n, z, dz, &ln);
 }
 
 void zl_span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                          uint32_t dz, const uint32_t *c, const uint32_t *dc)
 {
-    if (gouraud_fast(ss, crow, n, z, dz, c, dc)) {
-        uint16_t *c16 = (uint16_t *)(void *)crow;
-        int swap = ss->format == ZL_FORMAT_RGB565_BE && little_endian();
-        if (ss->func == ZL_LESS && swap)
-            span_gouraud_565(ZL_LESS, 1, c16, zrow, n, z, dz, c, dc);
-        else if (ss->func == ZL_LESS)
-            span_gouraud_exact(ZL_LESS, c16, zrow, n, z, dz, c, dc);
-        else if (swap)
-            span_gouraud_565(ZL_LEQUAL, 1, c16, zrow, n, z, dz, c, dc);
-        else
-            span_gouraud_exact(ZL_LEQUAL, c16, zrow, n, z, dz, c, dc);
+    int32_t k;
+    if (ss->bpp != 2 || !stays_below(c[0], dc[0], n, 256u << 16) || !stays_below(c[1], dc[1], n, 256u << 16) ||
+        !stays_below(c[2], dc[2], n, 256u << 16)) {
+        span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
         return;
     }
-    span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
+    if (n <= ZL_LANE_CHUNK) { /* the common case */
+        gouraud_chunk(ss, crow, zrow, n, z, dz, c, dc);
+        return;
+    }
+    for (k = 0; k < n; k += ZL_LANE_CHUNK) {
+        uint32_t ck[3];
+        ck[0] = c[0] + (uint32_t)k * dc[0];
+        ck[1] = c[1] + (uint32_t)k * dc[1];
+        ck[2] = c[2] + (uint32_t)k * dc[2];
+        gouraud_chunk(ss, crow + (size_t)k * 2u, zrow != NULL ? zrow + k : NULL,
+                      n - k < ZL_LANE_CHUNK ? n - k : ZL_LANE_CHUNK, z + (uint32_t)k * dz, dz, ck, dc);
+    }
 }
 
 static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
@@ -458,6 +569,8 @@ static void span_gouraud_generic(const zl_span_state *ss, uint8_t *crow, uint16_
     unsigned func = ss->func, bpp = ss->bpp;
     int32_t i;
     uint8_t pix[3] = {0, 0, 0};
+    if (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS))
+        return; /* as in lanes_generic */
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
         if (func == ZL_ALWAYS || depth_pass(func, d, zrow[i])) {

@@ -184,11 +184,40 @@ static inline unsigned channel_of(uint32_t c)
     return v;
 }
 
+/*
+ * Lane colour: how every RGB565 Gouraud pixel (either byte order) gets its
+ * colour, the bound of zline.h's Gouraud clause. A span with Q16 colour
+ * steppers c (rounding half added) and steps dc is cut into chunks of
+ * ZL_LANE_CHUNK pixels from its first; at pixel k of a chunk whose steppers
+ * start at c, each channel is the 8.8 value (a "lane")
+ *     l_k = (c >> 8) + k d,   d = zl_lane_step(dc) = round(dc / 256),
+ * and the pixel is zl_lane565 of the three: their top 5, 6, 5 bits. A
+ * chunk whose lanes would leave 0 .. 0xFFFF takes the Q16 steppers
+ * instead (clamped, as RGB888 always does). Two lanes fit a 32-bit word,
+ * so the pair loop steps a channel of two pixels with one add and packs a
+ * pair in five instructions (zl_span.c); the value does not depend on the
+ * loop that writes it, so frame and scanline modes agree. Precision: the
+ * start is below the stepper by under 1/256, the step off by at most 1/512
+ * (+ 1/65536 from dc) a pixel, so over 511 steps a lane stays within about
+ * 1 (8-bit units) of the stepper, itself the exact mix + 0.5: within one
+ * RGB565 step (4 or 8 units) of the exact value.
+ */
+#define ZL_LANE_CHUNK 512
+static ZL_ALWAYS_INLINE int32_t zl_lane_step(uint32_t dc)
+{
+    return zl_floor_shift32((int32_t)dc + (1 << 7), 8);
+}
+static ZL_ALWAYS_INLINE uint32_t zl_lane565(uint32_t r, uint32_t g, uint32_t b)
+{
+    return (r & 0xF800u) | ((g & 0xFC00u) >> 5) | (b >> 11);
+}
+
 /* Fill n pixels of a span from column 0 of crow/zrow: depth z (Q14 with the
  * rounding half added) stepped by dz, one packed colour pix. */
 void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
                   const uint8_t *pix);
-/* The same with Q16 colour steppers c (rounding half added) stepped by dc. */
+/* The same with Q16 colour steppers c (rounding half added) stepped by dc;
+ * RGB565 (either byte order) in lane colour (above). */
 void zl_span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
                      const uint32_t *c, const uint32_t *dc);
 

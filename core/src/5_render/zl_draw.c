@@ -175,6 +175,18 @@ static int plain_flat(const zl_context *ctx)
            sty->toon_bands == 0 && !zl_style_needs_planes(sty);
 }
 
+/* Whether every triangle of a draw is a plain Gouraud fill with the vertex
+ * colours as they are: plain_flat's style, light off, vertex colours given.
+ * Then a cached triangle inside the clip volume can skip the general
+ * polygon path too (draw_plain_gouraud). */
+static int plain_gouraud(const zl_context *ctx, const zl_mesh *mesh)
+{
+    const zl_style *sty = &ctx->style;
+    return ctx->state.shading == ZL_SHADE_GOURAUD && !ctx->state.light_on && mesh->vertex_colors != NULL &&
+           sty->polygon_front == ZL_POLY_FILL && sty->polygon_back == ZL_POLY_FILL && sty->offset_factor == 0 &&
+           sty->offset_units == 0 && sty->toon_bands == 0 && !zl_style_needs_planes(sty);
+}
+
 /* Triangle t of any draw through the general path: polygon (clipped when
  * it must be), cull, shade, pieces. Out of line, so its big frame (a
  * textured polygon) is not on the stack of the fast loop. */
@@ -197,6 +209,33 @@ static ZL_NOINLINE void draw_general(const zl_context *ctx, const zl_source *src
  * colour), classified once. With `tiny` (zl_tiny_span_state) a small
  * triangle needs no record at all.
  */
+/*
+ * A visible triangle of a plain Gouraud draw from the vertex cache (the
+ * caller culled it): a small one set up and drawn without a record
+ * (zl_tiny_gouraud_setup, the same planes and pixels as the general path).
+ * 0 for any other: the caller's caller takes it through the general path,
+ * so that path's stack is not added to this one's.
+ */
+static ZL_ALWAYS_INLINE int draw_visible_gouraud(const zl_context *ctx, const zl_source *src, uint32_t t,
+                                                 const zl_span_state *ss, const zl_cached_vertex *const *c, int tiny)
+{
+    if (tiny) {
+        const uint16_t *idx = src->mesh->indices + t * 3u;
+        const uint8_t *vc = src->mesh->vertex_colors, *col[3];
+        zl_tiny_gouraud tg;
+        int set;
+        col[0] = vc + idx[0] * 3u;
+        col[1] = vc + idx[1] * 3u;
+        col[2] = vc + idx[2] * 3u;
+        set = zl_tiny_gouraud_setup(&tg, c, col, src->height);
+        if (set > 0)
+            zl_tiny_gouraud_draw(&tg, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride,
+                                 (uint8_t *)ctx->target.depth, ctx->target.depth_stride);
+        return set >= 0;
+    }
+    return 0;
+}
+
 static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source *src, uint32_t t, const zl_span_state *ss,
                                      const zl_cached_vertex *const *c, int tiny, const int32_t *lq)
 {
@@ -258,15 +297,18 @@ static ZL_ALWAYS_INLINE void small_fetch(const zl_source *src, const small_cache
 
 /*
  * The triangles from t on of a plain flat draw with the vertex cache (or,
- * with sc, the small cache), up to the first that needs the general path
- * (a vertex to clip): returns its index, or the triangle count. Most culled
+ * with sc, the small cache), or with `gouraud` of a plain Gouraud draw,
+ * up to the first that needs the general path (a vertex to clip; for
+ * Gouraud also a triangle draw_visible_gouraud leaves to it): returns its
+ * index, or the triangle count. Most culled
  * triangles end in this loop, before any copy: zl_tri_classify's area test
  * on the cached int16 coordinates (the products fit 64 bits). A triangle
  * with an invalid vertex is dropped, as zl_tri_polygon_geom drops it. The
  * caller runs the general path, so its stack is not added to this loop's.
  */
 static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl_source *src, const zl_span_state *ss,
-                                                 uint32_t t, int cull_sign, int tiny, const small_cache *sc)
+                                                 uint32_t t, int cull_sign, int tiny, const small_cache *sc,
+                                                 int gouraud)
 {
     int32_t lq[3];
     const uint16_t *idx;
@@ -313,7 +355,10 @@ static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl
          * its high word's sign bit against flip's */
         if (area == 0 || (cull_sign != 0 && (((uint32_t)((uint64_t)area >> 32) ^ flip) >> 31) == 0))
             continue;
-        draw_visible(ctx, src, t, ss, c, tiny, lq);
+        if (!gouraud)
+            draw_visible(ctx, src, t, ss, c, tiny, lq);
+        else if (!draw_visible_gouraud(ctx, src, t, ss, c, tiny))
+            return t;
     }
     return n;
 }
@@ -321,14 +366,21 @@ static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl
 static uint32_t draw_plain(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, uint32_t t,
                            int cull_sign, int tiny)
 {
-    return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, NULL);
+    return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, NULL, 0);
+}
+
+/* draw_plain for a plain Gouraud draw (plain_gouraud). */
+static uint32_t draw_plain_gouraud(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, uint32_t t,
+                                   int cull_sign, int tiny)
+{
+    return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, NULL, 1);
 }
 
 #if ZL_DRAW_CACHE_SLOTS > 0
 static uint32_t draw_plain_small(const zl_context *ctx, const zl_source *src, const zl_span_state *ss, uint32_t t,
                                  int cull_sign, int tiny, const small_cache *sc)
 {
-    return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, sc);
+    return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, sc, 0);
 }
 
 /* A plain flat draw without the caller's cache, through ctx->draw_cache. */
@@ -432,6 +484,14 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
         int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
         for (t = draw_plain(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;
              t = draw_plain(ctx, &src, &ss, t + 1, cull_sign, tiny))
+            draw_general(ctx, &src, t, &ss, 0);
+        return ZL_OK;
+    }
+    if (src.cache != NULL && plain_gouraud(ctx, mesh)) {
+        int cull_sign = culled_area_sign(&ctx->state);
+        int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
+        for (t = draw_plain_gouraud(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;
+             t = draw_plain_gouraud(ctx, &src, &ss, t + 1, cull_sign, tiny))
             draw_general(ctx, &src, t, &ss, 0);
         return ZL_OK;
     }

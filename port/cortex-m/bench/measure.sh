@@ -243,7 +243,7 @@ done
 echo
 echo "### Smooth lighting on Cortex-M4 (bunny_smooth, bench_smooth.c)"
 echo
-echo "The bunny scene's camera, lit per vertex by zl_light_vertices (1839 vertices, area-weighted normals, a key light with Blinn-Phong specular, exponent 24, and a fill light, in eye space), Gouraud-interpolated. light: zl_light_vertices alone; draw: zl_clear + zl_draw_mesh of the lit mesh with the vertex cache; frame: light + draw; scanline: light + the zl_frame frame with one-row bands."
+echo "The bunny scene's camera, lit per vertex by zl_light_vertices (1839 vertices, area-weighted normals, a key light with Blinn-Phong specular, exponent 24, and a fill light, in eye space), Gouraud-interpolated. light: zl_light_vertices alone; draw: zl_clear + zl_draw_mesh of the lit mesh with the vertex cache (the bunny with per-vertex colours); frame: light + draw; scanline: light + the zl_frame frame with one-row bands."
 echo
 echo "| interval | -O2 | -Os |"
 echo "|---|---:|---:|"
@@ -254,6 +254,10 @@ done
 lv=$(awk '$1 == "RESULT" && $4 == "vertices" { print $5; exit }' "$out/smooth-O2.txt")
 li=$(awk '$1 == "INTERVAL" && $4 == "light" { print $5; exit }' "$out/smooth-O2.txt")
 [ -n "$lv" ] && [ -n "$li" ] && echo && echo "Lighting per vertex at -O2: $((li / lv)) instructions (2 lights, one with specular)."
+# the bunny with per-vertex colours against the flat bunny frame (issue 13: at most 1.3 x)
+sd=$(awk '$1 == "INTERVAL" && $3 == "bunny_smooth" && $4 == "draw" { print $5; exit }' "$out/smooth-O2.txt")
+fv=$(awk '$1 == "INTERVAL" && $3 == "bunny" && $4 == "total_vcache" { print $5; exit }' "$out/frame-O2.txt")
+[ -n "$sd" ] && [ -n "$fv" ] && echo && echo "The bunny with per-vertex colours (draw, -O2) against the flat bunny frame with the vertex cache ($(num "$fv")): $(awk -v a="$sd" -v b="$fv" 'BEGIN { printf "%.2f", a / b }') x."
 mism=$(awk '$3 ~ /_plugin_insn_mismatch$/' "$R")
 echo
 if [ -n "$plugin" ] && [ -z "$mism" ]; then

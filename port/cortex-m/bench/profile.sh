@@ -10,7 +10,8 @@
 # executed inside that frame.
 #
 #   port/cortex-m/bench/profile.sh [BUILD_DIR]  (env: SCENE=bunny TOP=20 KEY=total; KEY=total_vcache
-#   profiles the frame-mode frame drawn through the vertex cache)
+#   profiles the frame-mode frame drawn through the vertex cache; TAGS=smooth-O2 SCENE=bunny_smooth
+#   KEY=draw the bunny with per-vertex colours of bench_smooth.c)
 #
 # BUILD_DIR defaults to build/cortex-m4-profile. Check: the profile's total is
 # the plugin's count between the two marks, which includes mark()'s own
@@ -24,13 +25,14 @@ build=${1:-build/cortex-m4-profile}
 scene=${SCENE:-bunny}
 top=${TOP:-20}
 key=${KEY:-total}
+tags=${TAGS:-frame-O2 scanline-O2}
 bench=$build/port/cortex-m/bench
 out=$build/profile
 mkdir -p "$out"
 
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
     -DZLINE_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 >/dev/null
+cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 bench_smooth_O2 >/dev/null
 
 plugin=$out/m4timing.so
 if ! ${CC:-cc} -std=c99 -O2 -shared -fPIC -o "$plugin" tools/qemu-m4-timing/m4timing.c 2>"$out/plugin.log"; then
@@ -40,7 +42,7 @@ fi
 
 tab=$(printf '\t')
 status=0
-for tag in frame-O2 scanline-O2; do
+for tag in $tags; do
     mode=${tag%-*}; opt=${tag#*-}
     elf=$bench/bench_${mode}_${opt}.elf
     mark=$(arm-none-eabi-nm "$elf" | awk '$3 == "mark" { print "0x" $1 }')
