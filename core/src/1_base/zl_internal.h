@@ -230,6 +230,19 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #define ZL_ALWAYS_INLINE inline
 #endif
 
+/* 1 on targets without a 32x32->64 multiply or a divide instruction
+ * (ARMv6-M: Cortex-M0/M0+), where libgcc's __aeabi_lmul costs about 40
+ * instructions a product and a division 60 to 70: some hot paths then take
+ * exact 32-bit forms of the same numbers (bit-identical results). A host
+ * build may define ZL_MUL32_ONLY=1 to test those forms. */
+#ifndef ZL_MUL32_ONLY
+#if defined(__ARM_ARCH_6M__)
+#define ZL_MUL32_ONLY 1
+#else
+#define ZL_MUL32_ONLY 0
+#endif
+#endif
+
 /* ---- stage 2, geometry: 2_geometry/zl_vertex.c, zl_light.c, zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour
  * included). Returns 0 if the transform leaves its range. */
