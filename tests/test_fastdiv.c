@@ -781,6 +781,16 @@ static void test_isqrt32_squares(void)
     }
 }
 
+/* zl_div255_small (colour scaling on cores without a 64-bit multiply):
+ * every numerator colour scaling can make, 0 .. 255 * 255 + 127. */
+static void test_div255_small_all(void)
+{
+    uint32_t x;
+    for (x = 0; x <= 255u * 255u + 127u; x++)
+        if (zl_div255_small(x) != x / 255u)
+            TEST_ASSERT_EQUAL_UINT(x / 255u, zl_div255_small(x));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -797,5 +807,6 @@ int main(void)
     RUN_TEST(test_lighting_matches_64bit_definition);
     RUN_TEST(test_lighting_edges);
     RUN_TEST(test_isqrt32_squares);
+    RUN_TEST(test_div255_small_all);
     return UNITY_END();
 }

@@ -243,6 +243,15 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #endif
 #endif
 
+/* floor(x / 255) for x <= 65152 (255 * 255 + 127, what colour scaling
+ * divides), by a multiply: GCC keeps the division (a libgcc call) where it
+ * has no 32x32->64 multiply to use. x 0x8081 stays below 2^32 there, and
+ * the quotient is exact for every such x (tests/test_fastdiv.c checks all). */
+static inline uint32_t zl_div255_small(uint32_t x)
+{
+    return (x * 0x8081u) >> 23;
+}
+
 /* ---- stage 2, geometry: 2_geometry/zl_vertex.c, zl_light.c, zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour
  * included). Returns 0 if the transform leaves its range. */
