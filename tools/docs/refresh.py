@@ -181,6 +181,18 @@ def refresh(doc, secs, vis, check=False):
     print(f"{doc}: {len(done)} tables: " + "; ".join(done))
 
 
+def m0_profiles(build):
+    """profile.sh on the Cortex-M0 build (bunny: the cached frame, the default call and
+    scanline mode), its headings marked ", Cortex-M0" so they do not take the M4 tables."""
+    out = ""
+    for key in ("total_vcache", "total"):
+        p = run(["sh", "port/cortex-m/bench/profile.sh", build], {"CPU": "cortex-m0", "KEY": key})
+        if key == "total_vcache":
+            p = p.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")
+        out += "\n" + re.sub(r"^(### .*?, -O2)", r"\1, Cortex-M0", p, flags=re.M)
+    return out
+
+
 def main():
     build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
     cortex_m0, cortex_m_named = None, False
@@ -209,6 +221,8 @@ def main():
     text = ""
     if cortex_m0:
         text += run(["sh", "port/cortex-m/bench/measure-m0.sh", cortex_m0])
+        if not check:  # docs/CORTEX_M.md only: --check compares README
+            text += "\n" + m0_profiles(cortex_m0)
     if cortex_m:
         text += run(["sh", "port/cortex-m/bench/measure.sh", build])
     if host:
