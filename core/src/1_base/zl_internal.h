@@ -252,6 +252,19 @@ static inline uint32_t zl_div255_small(uint32_t x)
     return (x * 0x8081u) >> 23;
 }
 
+/* a b for 32-bit a, b from four 16x16-bit products (each fits 32 bits:
+ * the halves are floor(v / 2^16) and v mod 2^16), for cores without a
+ * 32x32->64 multiply, where GCC calls __aeabi_lmul (about 42 instructions)
+ * for (int64_t)a * b. Used where ZL_MUL32_ONLY; defined everywhere, so the
+ * tests check it on every build. */
+static inline int64_t zl_mul_s32_split(int32_t a, int32_t b)
+{
+    int32_t ah = zl_floor_shift32(a, 16), bh = zl_floor_shift32(b, 16);
+    int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
+    int64_t mid = (int64_t)(ah * bl) + (int64_t)(al * bh); /* each within 2^31 in magnitude */
+    return (int64_t)(ah * bh) * 4294967296 + mid * 65536 + (int64_t)((uint32_t)al * (uint32_t)bl);
+}
+
 /* ---- stage 2, geometry: 2_geometry/zl_vertex.c, zl_light.c, zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour
  * included). Returns 0 if the transform leaves its range. */
