@@ -156,13 +156,16 @@ static int32_t round_div_w(int64_t n, int32_t w)
  * For w below 2^20 (clip w below 16.0, most scenes) it is schoolbook long
  * division in digits of 12, 12 and 8 bits: every partial remainder is below
  * w, so remainder * 2^12 plus the next digit fits 32 bits and each digit is
- * one 32-bit division, no correction step. Where division is a library call
- * (Cortex-M0) the general 64/32 division is used throughout.
+ * one 32-bit division, no correction step. On Cortex-M0, where a division
+ * is a library call whose cost grows with the quotient's bits, the three
+ * short quotients still cost less than zl_udiv64_32's normalisation and two
+ * 16-bit digits (issue 13: bunny frame -178 K instructions there). Other
+ * cores without a divide instruction take the general 64/32 division.
  */
 static ZL_ALWAYS_INLINE uint32_t depth_q16(uint32_t z, uint32_t w)
 {
     uint64_t n = ((uint64_t)z << 32) - ((uint64_t)z << 16) + (w >> 1); /* shifts: no multiply */
-#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__) || ZL_MUL32_ONLY
     if (w < (1u << 20)) {
         uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r, q2, q1, q0;
         r = (hi << 12) | (lo >> 20); /* hi < w */

@@ -79,27 +79,6 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
  * 12.2) bunny with the vertex cache 1,647,545 -> 1,663,957 (+16,412, +1.0 %)
  * and tris 6,587,244 -> 6,677,356 (+90,112), the register allocation of
  * zl_tiny_draw's four copies. */
-#if ZL_MUL32_ONLY
-/* No divide instruction (ZL_MUL32_ONLY): an edge's x = ceil(n / d) is
- * divided once, then walked from row to row with its remainder r = x d - n
- * in [0, d): n grows by inc, and x moves one column per d the remainder
- * leaves [0, d) by. Exactly tiny_x's value on every row; the steps add up
- * to the edge's travel in columns, which the triangle's rows span anyway. */
-static ZL_ALWAYS_INLINE void tiny_walk(int32_t *x, int32_t *r, int32_t inc, int32_t d)
-{
-    int32_t xv = *x, rv = *r - inc;
-    while (rv < 0) {
-        rv += d;
-        xv++;
-    }
-    while (rv >= d) {
-        rv -= d;
-        xv--;
-    }
-    *x = xv;
-    *r = rv;
-}
-#endif
 
 static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state *ss, unsigned func, int long_left,
                                           int32_t j, int32_t j_end, int32_t nl, const zl_tiny_edge *se,
