@@ -144,7 +144,9 @@ struct zl_active {
  * mid those three of lower go to right); the 32-bit plane, as int32 bits:
  * left.rem zbase, left.rstep zdx, right.rem zr (this row), right.rstep zdy;
  * zlo, zhi, dz14, ax, row (first), mid, end as zl_tiny's; lower_is_left is
- * long_left. z is not used. */
+ * long_left. z is not used. Where ZL_MUL32_ONLY, left.x and right.x hold
+ * their columns once active and lower.rem, lower.rstep their remainders
+ * (zl_frame_rows.c, tiny_walk_start). */
 #define ZL_KIND_TINY 4
 
 /* How the spans of one draw write their pixels. */

@@ -361,6 +361,7 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
     return c;
 }
 
+#if !ZL_MUL32_ONLY
 /* Row r of the transform when no range check is needed (vs->pfast). */
 static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_fixed *p)
 {
@@ -368,6 +369,7 @@ static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_
     int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
     return (int32_t)zl_floor_shift64(acc, 16); /* |acc| < 2^47 */
 }
+#endif
 
 #if ZL_MUL32_ONLY
 /* A position split for vx_row_split: p = h 2^16 + l, h = floor(p / 2^16)
