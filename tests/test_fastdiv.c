@@ -781,6 +781,35 @@ static void test_isqrt32_squares(void)
     }
 }
 
+/* zl_div255_small (colour scaling on cores without a 64-bit multiply):
+ * every numerator colour scaling can make, 0 .. 255 * 255 + 127. */
+static void test_div255_small_all(void)
+{
+    uint32_t x;
+    for (x = 0; x <= 255u * 255u + 127u; x++)
+        if (zl_div255_small(x) != x / 255u)
+            TEST_ASSERT_EQUAL_UINT(x / 255u, zl_div255_small(x));
+}
+
+/* zl_mul_s32_split (the plane set-up's products without a 64-bit
+ * multiply) against the C product: the corners of int32 and random pairs
+ * of every magnitude. */
+static void test_mul_s32_split(void)
+{
+    static const int32_t edge[] = {0, 1, -1, 65535, 65536, -65536, -65537, 32767, -32768, INT32_MAX, INT32_MIN,
+                                   INT32_MAX - 1, INT32_MIN + 1, 0x7FFF0000, -0x7FFF0000};
+    unsigned i, j;
+    uint32_t k;
+    for (i = 0; i < sizeof edge / sizeof edge[0]; i++)
+        for (j = 0; j < sizeof edge / sizeof edge[0]; j++)
+            TEST_ASSERT_EQUAL_INT64((int64_t)edge[i] * edge[j], zl_mul_s32_split(edge[i], edge[j]));
+    for (k = 0; k < 200000u; k++) {
+        int32_t a = (int32_t)(rnd32() >> (k % 32u)), b = (int32_t)rnd32() >> ((k / 32u) % 32u);
+        if (zl_mul_s32_split(a, b) != (int64_t)a * b)
+            TEST_ASSERT_EQUAL_INT64((int64_t)a * b, zl_mul_s32_split(a, b));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -797,5 +826,7 @@ int main(void)
     RUN_TEST(test_lighting_matches_64bit_definition);
     RUN_TEST(test_lighting_edges);
     RUN_TEST(test_isqrt32_squares);
+    RUN_TEST(test_div255_small_all);
+    RUN_TEST(test_mul_s32_split);
     return UNITY_END();
 }

@@ -2,13 +2,16 @@
 """Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
 
     python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
-                                  [--riscv BUILD_DIR] [--riscv-only] [--slots BUILD_PREFIX]
+                                  [--riscv BUILD_DIR] [--riscv-only] [--cortex-m0 BUILD_DIR]
+                                  [--slots BUILD_PREFIX]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
 KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny and
 tools/visbench/measure.sh (a host build with the render command's targets, and valgrind), with
 --riscv also port/riscv/bench/measure.sh (rv32imac; --riscv-only: that alone, build/rv32imac-bench
-unless --riscv names one), with --slots also port/cortex-m/bench/slot-sweep.sh (five Cortex-M4
+unless --riscv names one), with --cortex-m0 also port/cortex-m/bench/measure-m0.sh (a
+ZLINE_CPU=cortex-m0 build; without --cortex-m, that alone: the Cortex-M4 measurement runs only
+when --cortex-m names its build or no --cortex-m0 is given), with --slots also port/cortex-m/bench/slot-sweep.sh (five Cortex-M4
 builds, BUILD_PREFIX-N; the table is not part of --check, which would take minutes), splits their output into sections ("### title"
 plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
@@ -23,7 +26,8 @@ with the fresh measurement, and the exit status is 1 when one drifted: an instru
 count (any other number) by more than 0.5 % (a ratio printed with decimals may also
 differ by one unit of its last digit, its rounding), a byte count (a column whose
 heading names bytes, RAM, flash or stack) at all. CTest runs it in the Cortex-M4 build
-(docs_measured_tables), so README cannot drift from the code.
+(docs_measured_tables) and, with --cortex-m0 alone, in the Cortex-M0 build
+(docs_measured_tables_m0), so README cannot drift from the code.
 """
 import os
 import re
@@ -179,13 +183,26 @@ def refresh(doc, secs, vis, check=False):
     print(f"{doc}: {len(done)} tables: " + "; ".join(done))
 
 
+def m0_profiles(build):
+    """profile.sh on the Cortex-M0 build (bunny: the cached frame, the default call and
+    scanline mode), its headings marked ", Cortex-M0" so they do not take the M4 tables."""
+    out = ""
+    for key in ("total_vcache", "total"):
+        p = run(["sh", "port/cortex-m/bench/profile.sh", build], {"CPU": "cortex-m0", "KEY": key})
+        if key == "total_vcache":
+            p = p.replace("frame mode, -O2", "frame mode with the vertex cache, -O2")
+        out += "\n" + re.sub(r"^(### .*?, -O2)", r"\1, Cortex-M0", p, flags=re.M)
+    return out
+
+
 def main():
-    build, host, riscv, cortex_m, slots = "build/cortex-m4-bench", None, None, True, None
+    build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
+    cortex_m0, cortex_m_named, slots = None, False, None
     args = sys.argv[1:]
     check = False
     if args and args[0] == "--check":
         check, args = True, args[1:]
-    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only", "--slots"):
+    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only", "--cortex-m0", "--slots"):
         if args[0] == "--riscv-only":
             cortex_m, riscv = False, riscv or "build/rv32imac-bench"
             args = args[1:]
@@ -193,7 +210,9 @@ def main():
         if len(args) < 2:
             sys.exit(f"refresh.py: {args[0]} needs a build directory")
         if args[0] == "--cortex-m":
-            build = args[1]
+            build, cortex_m_named = args[1], True
+        elif args[0] == "--cortex-m0":
+            cortex_m0 = args[1]
         elif args[0] == "--host":
             host = args[1]
         elif args[0] == "--slots":
@@ -201,7 +220,13 @@ def main():
         else:
             riscv = args[1]
         args = args[2:]
+    if cortex_m0 and not cortex_m_named:
+        cortex_m = False
     text = ""
+    if cortex_m0:
+        text += run(["sh", "port/cortex-m/bench/measure-m0.sh", cortex_m0])
+        if not check:  # docs/CORTEX_M.md only: --check compares README
+            text += "\n" + m0_profiles(cortex_m0)
     if cortex_m:
         text += run(["sh", "port/cortex-m/bench/measure.sh", build])
     if host:

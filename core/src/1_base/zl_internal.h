@@ -147,7 +147,9 @@ struct zl_active {
  * mid those three of lower go to right); the 32-bit plane, as int32 bits:
  * left.rem zbase, left.rstep zdx, right.rem zr (this row), right.rstep zdy;
  * zlo, zhi, dz14, ax, row (first), mid, end as zl_tiny's; lower_is_left is
- * long_left. z is not used. */
+ * long_left. z is not used. Where ZL_MUL32_ONLY, left.x and right.x hold
+ * their columns once active and lower.rem, lower.rstep their remainders
+ * (zl_frame_rows.c, tiny_walk_start). */
 #define ZL_KIND_TINY 4
 
 /* How the spans of one draw write their pixels. */
@@ -232,6 +234,41 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #else
 #define ZL_ALWAYS_INLINE inline
 #endif
+
+/* 1 on targets without a 32x32->64 multiply or a divide instruction
+ * (ARMv6-M: Cortex-M0/M0+), where libgcc's __aeabi_lmul costs about 40
+ * instructions a product and a division 60 to 70: some hot paths then take
+ * exact 32-bit forms of the same numbers (bit-identical results). A host
+ * build may define ZL_MUL32_ONLY=1 to test those forms. */
+#ifndef ZL_MUL32_ONLY
+#if defined(__ARM_ARCH_6M__)
+#define ZL_MUL32_ONLY 1
+#else
+#define ZL_MUL32_ONLY 0
+#endif
+#endif
+
+/* floor(x / 255) for x <= 65152 (255 * 255 + 127, what colour scaling
+ * divides), by a multiply: GCC keeps the division (a libgcc call) where it
+ * has no 32x32->64 multiply to use. x 0x8081 stays below 2^32 there, and
+ * the quotient is exact for every such x (tests/test_fastdiv.c checks all). */
+static inline uint32_t zl_div255_small(uint32_t x)
+{
+    return (x * 0x8081u) >> 23;
+}
+
+/* a b for 32-bit a, b from four 16x16-bit products (each fits 32 bits:
+ * the halves are floor(v / 2^16) and v mod 2^16), for cores without a
+ * 32x32->64 multiply, where GCC calls __aeabi_lmul (about 42 instructions)
+ * for (int64_t)a * b. Used where ZL_MUL32_ONLY; defined everywhere, so the
+ * tests check it on every build. */
+static inline int64_t zl_mul_s32_split(int32_t a, int32_t b)
+{
+    int32_t ah = zl_floor_shift32(a, 16), bh = zl_floor_shift32(b, 16);
+    int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
+    int64_t mid = (int64_t)(ah * bl) + (int64_t)(al * bh); /* each within 2^31 in magnitude */
+    return (int64_t)(ah * bh) * 4294967296 + mid * 65536 + (int64_t)((uint32_t)al * (uint32_t)bl);
+}
 
 /* ---- stage 2, geometry: 2_geometry/zl_vertex.c, zl_light.c, zl_clip.c */
 /* Transform vertex `idx` of the source's mesh to clip space (colour

@@ -157,7 +157,11 @@ static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *i
 
 static uint8_t scale255(unsigned c, unsigned i)
 {
+#if ZL_MUL32_ONLY
+    return (uint8_t)zl_div255_small(c * i + 127); /* c, i <= 255 */
+#else
     return (uint8_t)((c * i + 127) / 255);
+#endif
 }
 
 static uint16_t scale255_q8(unsigned c, unsigned i)

@@ -156,13 +156,16 @@ static int32_t round_div_w(int64_t n, int32_t w)
  * For w below 2^20 (clip w below 16.0, most scenes) it is schoolbook long
  * division in digits of 12, 12 and 8 bits: every partial remainder is below
  * w, so remainder * 2^12 plus the next digit fits 32 bits and each digit is
- * one 32-bit division, no correction step. Where division is a library call
- * (Cortex-M0) the general 64/32 division is used throughout.
+ * one 32-bit division, no correction step. On Cortex-M0, where a division
+ * is a library call whose cost grows with the quotient's bits, the three
+ * short quotients still cost less than zl_udiv64_32's normalisation and two
+ * 16-bit digits (issue 13: bunny frame -178 K instructions there). Other
+ * cores without a divide instruction take the general 64/32 division.
  */
 static ZL_ALWAYS_INLINE uint32_t depth_q16(uint32_t z, uint32_t w)
 {
     uint64_t n = ((uint64_t)z << 32) - ((uint64_t)z << 16) + (w >> 1); /* shifts: no multiply */
-#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+#if defined(__ARM_FEATURE_IDIV) || !defined(__arm__) || ZL_MUL32_ONLY
     if (w < (1u << 20)) {
         uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r, q2, q1, q0;
         r = (hi << 12) | (lo >> 20); /* hi < w */
@@ -358,6 +361,7 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
     return c;
 }
 
+#if !ZL_MUL32_ONLY
 /* Row r of the transform when no range check is needed (vs->pfast). */
 static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_fixed *p)
 {
@@ -365,6 +369,66 @@ static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_
     int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
     return (int32_t)zl_floor_shift64(acc, 16); /* |acc| < 2^47 */
 }
+#endif
+
+#if ZL_MUL32_ONLY
+/* A position split for vx_row_split: p = h 2^16 + l, h = floor(p / 2^16)
+ * (as uint32, mod 2^32), l in [0, 2^16). */
+typedef struct {
+    uint32_t h0, l0, h1, l1, h2, l2;
+} vx_split;
+
+/* One product of vx_row_split: m p = (m ph + mh pl) 2^16 + ml pl, into the
+ * high sum *hi (multiples of 2^16, with floor(ml pl / 2^16)) and the low one. */
+static ZL_ALWAYS_INLINE void split_mac(uint32_t *hi, uint32_t *lo, zl_fixed m, uint32_t ph, uint32_t pl)
+{
+    uint32_t u = ((uint32_t)m & 0xFFFFu) * pl;
+    *hi += (uint32_t)m * ph + (uint32_t)zl_floor_shift32(m, 16) * pl + (u >> 16);
+    *lo += u & 0xFFFFu;
+}
+
+/*
+ * vx_row_fast in 32-bit products (ZL_MUL32_ONLY: no 64-bit multiply). With
+ * p = ph 2^16 + pl and m = mh 2^16 + ml (ph, mh the floors of p / 2^16 and
+ * m / 2^16; pl, ml in [0, 2^16)), each product is m p = (m ph + mh pl) 2^16
+ * + ml pl, with ml pl < 2^32, so
+ *   floor((m3 2^16 + 2^15 + sum m p) / 2^16)
+ *     = m3 + sum (m ph + mh pl + floor(ml pl / 2^16))
+ *       + floor((2^15 + sum (ml pl mod 2^16)) / 2^16)
+ * exactly. The result fits int32 (the fast bound), so the sum taken mod 2^32
+ * is it: three 32-bit multiplies a product instead of one __aeabi_lmul.
+ */
+static ZL_ALWAYS_INLINE int32_t vx_row_split(const vx_setup *vs, int r, const vx_split *ps)
+{
+    const zl_fixed *m = &vs->m[r * 4];
+    uint32_t hi = (uint32_t)m[3], lo = 32768u;
+    split_mac(&hi, &lo, m[0], ps->h0, ps->l0);
+    split_mac(&hi, &lo, m[1], ps->h1, ps->l1);
+    split_mac(&hi, &lo, m[2], ps->h2, ps->l2);
+    return (int32_t)(hi + (lo >> 16));
+}
+
+/* a b + c into *out when it is below 2^32 (then 1, else 0), in 32-bit
+ * products: the test (n >> 32) != 0 of vx_fast without a 64-bit multiply. */
+static ZL_ALWAYS_INLINE int mul_add_32(uint32_t a, uint32_t b, uint32_t c, uint32_t *out)
+{
+    uint32_t small = a < b ? a : b, large = a < b ? b : a, t, lo;
+    if ((small >> 16) != 0)
+        return 0; /* both at least 2^16 */
+    t = (large >> 16) * small;
+    if ((t >> 16) != 0)
+        return 0;
+    lo = (large & 0xFFFFu) * small;
+    t = (t << 16) + lo;
+    if (t < lo)
+        return 0;
+    t += c;
+    if (t < c)
+        return 0;
+    *out = t;
+    return 1;
+}
+#endif
 
 /*
  * vx_cache for the common vertex, same numbers, or 0 when it cannot tell
@@ -377,36 +441,71 @@ static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_
 static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c, int exact)
 {
     uint32_t pf = vs->pfast, ax, ay, q;
-    uint64_t n;
     int32_t x, y, z, w, wx;
-    int64_t wsum;
+    int64_t wsum = 0;
+#if ZL_MUL32_ONLY
+    vx_split ps;
+    uint32_t n;
+#else
+    uint64_t n;
+#endif
     if ((((uint32_t)p[0] + pf) | ((uint32_t)p[1] + pf) | ((uint32_t)p[2] + pf)) >= 2u * pf)
         return 0;
+#if ZL_MUL32_ONLY
+    ps.h0 = (uint32_t)zl_floor_shift32(p[0], 16);
+    ps.l0 = (uint32_t)p[0] & 0xFFFFu;
+    ps.h1 = (uint32_t)zl_floor_shift32(p[1], 16);
+    ps.l1 = (uint32_t)p[1] & 0xFFFFu;
+    ps.h2 = (uint32_t)zl_floor_shift32(p[2], 16);
+    ps.l2 = (uint32_t)p[2] & 0xFFFFu;
+    if (exact) {
+        wsum = vs->bias[3] + (int64_t)vs->m[12] * p[0] + (int64_t)vs->m[13] * p[1] + (int64_t)vs->m[14] * p[2];
+        w = (int32_t)zl_floor_shift64(wsum, 16);
+    } else {
+        w = vx_row_split(vs, 3, &ps);
+    }
+    z = vx_row_split(vs, 2, &ps);
+#else
     /* Each row where it is needed: the compiler keeps the order. */
     wsum = vs->bias[3] + (int64_t)vs->m[12] * p[0] + (int64_t)vs->m[13] * p[1] + (int64_t)vs->m[14] * p[2];
     w = (int32_t)zl_floor_shift64(wsum, 16); /* vx_row_fast of row 3 */
     z = vx_row_fast(vs, 2, p);
+#endif
     if (w < 1 || (uint32_t)z > (uint32_t)w) {
         c->x = ZL_CACHE_COMPLEX; /* outside the w, near or far plane */
         c->y = 0;
         c->z = 0;
         return 1;
     }
+#if ZL_MUL32_ONLY
+    x = vx_row_split(vs, 0, &ps);
+    ax = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+    if (!mul_add_32(ax, vs->hx, ((uint32_t)w - (x < 0)) >> 1, &n))
+        return 0;
+#else
     x = vx_row_fast(vs, 0, p);
     ax = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
     /* vx_window's offset: w/2, or w - 1 - w/2 = (w - 1)/2 for the negative side */
     n = (uint64_t)ax * vs->hx + (((uint32_t)w - (x < 0)) >> 1);
     if ((n >> 32) != 0)
         return 0;
+#endif
     q = (uint32_t)n / (uint32_t)w;
     if (q >= vs->qx)
         return 0;
     wx = x < 0 ? (int32_t)vs->hx - (int32_t)q : (int32_t)(vs->hx + q);
+#if ZL_MUL32_ONLY
+    y = vx_row_split(vs, 1, &ps);
+    ay = y < 0 ? 0u - (uint32_t)y : (uint32_t)y;
+    if (!mul_add_32(ay, vs->hy, ((uint32_t)w - (y > 0)) >> 1, &n))
+        return 0;
+#else
     y = vx_row_fast(vs, 1, p);
     ay = y < 0 ? 0u - (uint32_t)y : (uint32_t)y;
     n = (uint64_t)ay * vs->hy + (((uint32_t)w - (y > 0)) >> 1); /* row 0 at the top: (w - y) h / w */
     if ((n >> 32) != 0)
         return 0;
+#endif
     q = (uint32_t)n / (uint32_t)w;
     if (q >= vs->qy)
         return 0;

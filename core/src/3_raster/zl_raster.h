@@ -154,8 +154,13 @@ static ZL_ALWAYS_INLINE int round_div_frame(int64_t x, const small_frame *f, int
  */
 static ZL_ALWAYS_INLINE int plane_small(zl_attr *at, const small_frame *f, int64_t a0, int32_t d1, int32_t d2)
 {
+#if ZL_MUL32_ONLY
+    int64_t ga = zl_mul_s32_split(d1, f->dy2) - zl_mul_s32_split(d2, f->dy1);
+    int64_t gb = zl_mul_s32_split(f->dx1, d2) - zl_mul_s32_split(f->dx2, d1), dx, dy, off;
+#else
     int64_t ga = (int64_t)d1 * f->dy2 - (int64_t)d2 * f->dy1;
     int64_t gb = (int64_t)f->dx1 * d2 - (int64_t)f->dx2 * d1, dx, dy, off;
+#endif
     if (f->neg) {
         ga = -ga;
         gb = -gb;

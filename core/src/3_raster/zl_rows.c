@@ -79,18 +79,29 @@ static void row_span(const zl_active *t, const zl_gouraud *g, const zl_span_stat
  * 12.2) bunny with the vertex cache 1,647,545 -> 1,663,957 (+16,412, +1.0 %)
  * and tris 6,587,244 -> 6,677,356 (+90,112), the register allocation of
  * zl_tiny_draw's four copies. */
+
 static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state *ss, unsigned func, int long_left,
                                           int32_t j, int32_t j_end, int32_t nl, const zl_tiny_edge *se,
                                           uint8_t *color, int32_t color_stride, uint8_t *depth,
-                                          int32_t depth_stride, uint16_t pixel, uint32_t *zrow)
+                                          int32_t depth_stride, uint16_t pixel, uint32_t *zrow, int32_t *lwalk)
 {
     const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
     int32_t ns = se->n;
     uint32_t zr = *zrow;
+#if ZL_MUL32_ONLY
+    /* the long edge walks on from the upper rows (lwalk: its x and remainder) */
+    int32_t xl = lwalk[0], rl = lwalk[1], xs = tiny_x(ns, ds), rs = xs * ds - ns;
+#else
+    (void)lwalk;
+#endif
     color += (size_t)j * (size_t)color_stride;
     depth += (size_t)j * (size_t)depth_stride;
     for (; j < j_end; j++) {
+#if ZL_MUL32_ONLY
+        int32_t xa = xl, xb = xs;
+#else
         int32_t xa = tiny_x(nl, dl), xb = tiny_x(ns, ds);
+#endif
         int32_t x0 = long_left ? xa : xb, x1 = long_left ? xb : xa;
         x0 = x0 < 0 ? 0 : x0;
         x1 = x1 > width ? width : x1;
@@ -120,11 +131,19 @@ static ZL_ALWAYS_INLINE int32_t tiny_rows(const zl_tiny *tt, const zl_span_state
         }
         nl += il;
         ns += is;
+#if ZL_MUL32_ONLY
+        tiny_walk(&xl, &rl, il, dl);
+        tiny_walk(&xs, &rs, is, ds);
+#endif
         zr += tt->zdy;
         color += color_stride;
         depth += depth_stride;
     }
     *zrow = zr;
+#if ZL_MUL32_ONLY
+    lwalk[0] = xl;
+    lwalk[1] = rl;
+#endif
     return nl;
 }
 
@@ -133,13 +152,17 @@ static ZL_ALWAYS_INLINE void tiny_draw(const zl_tiny *tt, const zl_span_state *s
                                        uint16_t pixel)
 {
     uint32_t zrow = tt->zr;
-    int32_t nl = tt->lng.n;
+    int32_t nl = tt->lng.n, lwalk[2] = {0, 0};
+#if ZL_MUL32_ONLY
+    lwalk[0] = tiny_x(nl, tt->lng.d); /* tiny_walk's start: one division */
+    lwalk[1] = lwalk[0] * tt->lng.d - nl;
+#endif
     if (tt->first < tt->mid)
         nl = tiny_rows(tt, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
-                       depth_stride, pixel, &zrow);
+                       depth_stride, pixel, &zrow, lwalk);
     if (tt->mid < tt->end)
         (void)tiny_rows(tt, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
-                        depth_stride, pixel, &zrow);
+                        depth_stride, pixel, &zrow, lwalk);
 }
 
 void zl_tiny_draw(const zl_tiny *tt, const zl_span_state *ss, uint8_t *color, int32_t color_stride, uint8_t *depth,

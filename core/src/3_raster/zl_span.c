@@ -143,10 +143,86 @@ static ZL_ALWAYS_INLINE int32_t flat_pair_run(unsigned func, uint16_t *cend, uin
 
 /* The run once per depth function, each its own function so that the
  * compiler keeps all of the loop's values in registers. */
+#if !defined(ZL_NO_ASM) && defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
+/*
+ * ARMv6-M (Cortex-M0/M0+): flat_pair_run(ZL_LESS) by hand (issue 13: GCC's
+ * loop took about 12.5 instructions a pixel there, spilling to the high
+ * registers; this one 35 a step of four). Same values, same return:
+ *   r0 cend, r1 zend, r2 i in bytes (negative, a multiple of 8; 0 ends),
+ *   r3 y (pixel 0 of the pair), r4 the depth pair w, r5 dy, r6 y + dy,
+ *   r7 scratch, r8 the colour pair. A pair passes when y < (w << 16) and
+ *   (y1 >> 16) < (w >> 16); then depth (y1 & 0xFFFF0000) | (y >> 16) and
+ * the colour are stored. The index of the four is returned when a test
+ * fails, 0 at the end. GCC reads Thumb-1 inline assembly in divided
+ * syntax (no "s" suffixes); a naked function leaves the registers to it.
+ */
+#define ZL_ASM_ARG __attribute__((unused)) /* read by the assembly, in r0..r3 */
+__attribute__((naked, noinline)) static int32_t flat_pair_run_less(ZL_ASM_ARG uint16_t *cend, ZL_ASM_ARG uint16_t *zend,
+                                                                   ZL_ASM_ARG int32_t i, ZL_ASM_ARG const zl_pair_run *r)
+{
+    __asm__ volatile("push {r4, r5, r6, r7, lr}\n\t"
+                     "mov r4, r8\n\t"
+                     "push {r4}\n\t"
+                     "ldr r4, [r3, #8]\n\t" /* both */
+                     "mov r8, r4\n\t"
+                     "ldr r5, [r3, #4]\n\t" /* dy */
+                     "ldr r3, [r3, #0]\n\t" /* y */
+                     "lsl r2, r2, #1\n\t"
+                     "beq 3f\n"
+                     "1:\n\t"
+                     "ldr r4, [r1, r2]\n\t"
+                     "lsl r7, r4, #16\n\t"
+                     "cmp r3, r7\n\t"
+                     "bhs 2f\n\t"
+                     "add r6, r3, r5\n\t"
+                     "lsr r4, r4, #16\n\t"
+                     "lsr r7, r6, #16\n\t"
+                     "cmp r7, r4\n\t"
+                     "bhs 2f\n\t"
+                     "lsl r7, r7, #16\n\t"
+                     "lsr r4, r3, #16\n\t"
+                     "orr r4, r7\n\t"
+                     "str r4, [r1, r2]\n\t"
+                     "mov r7, r8\n\t"
+                     "str r7, [r0, r2]\n\t"
+                     "add r3, r6, r5\n\t"
+                     "add r2, #4\n\t"
+                     "ldr r4, [r1, r2]\n\t"
+                     "lsl r7, r4, #16\n\t"
+                     "cmp r3, r7\n\t"
+                     "bhs 5f\n\t"
+                     "add r6, r3, r5\n\t"
+                     "lsr r4, r4, #16\n\t"
+                     "lsr r7, r6, #16\n\t"
+                     "cmp r7, r4\n\t"
+                     "bhs 5f\n\t"
+                     "lsl r7, r7, #16\n\t"
+                     "lsr r4, r3, #16\n\t"
+                     "orr r4, r7\n\t"
+                     "str r4, [r1, r2]\n\t"
+                     "mov r7, r8\n\t"
+                     "str r7, [r0, r2]\n\t"
+                     "add r3, r6, r5\n\t"
+                     "add r2, #4\n\t"
+                     "bne 1b\n"
+                     "3:\n\t"
+                     "mov r0, #0\n\t"
+                     "b 4f\n"
+                     "5:\n\t"
+                     "sub r2, #4\n"
+                     "2:\n\t"
+                     "asr r0, r2, #1\n"
+                     "4:\n\t"
+                     "pop {r4}\n\t"
+                     "mov r8, r4\n\t"
+                     "pop {r4, r5, r6, r7, pc}");
+}
+#else
 static ZL_NOINLINE int32_t flat_pair_run_less(uint16_t *cend, uint16_t *zend, int32_t i, const zl_pair_run *r)
 {
     return flat_pair_run(ZL_LESS, cend, zend, i, r);
 }
+#endif
 
 static ZL_NOINLINE int32_t flat_pair_run_lequal(uint16_t *cend, uint16_t *zend, int32_t i, const zl_pair_run *r)
 {
@@ -623,6 +699,29 @@ static void fill_blocks_stm(uint16_t *p, uint32_t pair, uint32_t blocks)
                      : [d] "+r"(p), [n] "+r"(blocks)
                      : [v] "r"(pair)
                      : "r2", "r3", "r4", "r5", "r6", "r8", "r10", "r12", "cc", "memory");
+}
+#elif !defined(ZL_NO_ASM) && defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
+#define ZL_FILL_ASM 1
+/* The same on ARMv6-M (Cortex-M0/M0+), whose store-multiple takes low
+ * registers only: four of them, four stores a block (issue 13: the block
+ * copies below took about 23 instructions a block there). GCC reads
+ * Thumb-1 inline assembly in divided syntax: "sub" sets the flags. */
+static void fill_blocks_stm(uint16_t *p, uint32_t pair, uint32_t blocks)
+{
+    __asm__ volatile("mov r3, %[v]\n\t"
+                     "mov r4, %[v]\n\t"
+                     "mov r5, %[v]\n\t"
+                     "mov r6, %[v]\n"
+                     "1:\n\t"
+                     "stmia %[d]!, {r3, r4, r5, r6}\n\t"
+                     "stmia %[d]!, {r3, r4, r5, r6}\n\t"
+                     "stmia %[d]!, {r3, r4, r5, r6}\n\t"
+                     "stmia %[d]!, {r3, r4, r5, r6}\n\t"
+                     "sub %[n], #1\n\t"
+                     "bne 1b"
+                     : [d] "+l"(p), [n] "+l"(blocks)
+                     : [v] "l"(pair)
+                     : "r3", "r4", "r5", "r6", "cc", "memory");
 }
 #else
 #define ZL_FILL_ASM 0

@@ -98,6 +98,29 @@ static ZL_ALWAYS_INLINE int32_t tiny_x(int32_t n, int32_t d)
     return q * d < n ? q + 1 : q;
 }
 
+#if ZL_MUL32_ONLY
+/* No divide instruction (ZL_MUL32_ONLY): an edge's x = ceil(n / d) is
+ * divided once, then walked from row to row with its remainder r = x d - n
+ * in [0, d): n grows by inc, and x moves one column per d the remainder
+ * leaves [0, d) by. Exactly tiny_x's value on every row; the steps add up
+ * to the edge's travel in columns, which the triangle's rows span anyway.
+ * zl_tiny_draw's rows and scanline mode's ZL_KIND_TINY records use it. */
+static ZL_ALWAYS_INLINE void tiny_walk(int32_t *x, int32_t *r, int32_t inc, int32_t d)
+{
+    int32_t xv = *x, rv = *r - inc;
+    while (rv < 0) {
+        rv += d;
+        xv++;
+    }
+    while (rv >= d) {
+        rv -= d;
+        xv--;
+    }
+    *x = xv;
+    *r = rv;
+}
+#endif
+
 /*
  * One row of a small triangle (zl_tiny, zl_internal.h), shared by frame
  * mode's tiny_rows (zl_rows.c) and scanline mode's ZL_KIND_TINY records

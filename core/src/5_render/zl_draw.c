@@ -350,7 +350,15 @@ static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl
             continue;
         }
         y0 = c[0]->y;
-        area = (int64_t)(x1 - x0) * (c[2]->y - y0) - (int64_t)(x2 - x0) * (c[1]->y - y0);
+#if ZL_MUL32_ONLY
+        /* no 64-bit multiply: differences within +-2^14 (the common case)
+         * keep the products within 2^28, the area exact in 32 bits */
+        if ((((uint32_t)(x1 - x0 + 16384)) | ((uint32_t)(c[2]->y - y0 + 16384)) | ((uint32_t)(x2 - x0 + 16384)) |
+             ((uint32_t)(c[1]->y - y0 + 16384))) < 32768u)
+            area = (x1 - x0) * (c[2]->y - y0) - (x2 - x0) * (c[1]->y - y0);
+        else
+#endif
+            area = (int64_t)(x1 - x0) * (c[2]->y - y0) - (int64_t)(x2 - x0) * (c[1]->y - y0);
         /* culled: the area's sign is cull_sign; for a non-zero area that is
          * its high word's sign bit against flip's */
         if (area == 0 || (cull_sign != 0 && (((uint32_t)((uint64_t)area >> 32) ^ flip) >> 31) == 0))

@@ -34,6 +34,24 @@ static ZL_ALWAYS_INLINE uint16_t pixel565(const zl_active *a)
                       (unsigned)(a->rgb[2] >> 3));
 }
 
+#if ZL_MUL32_ONLY
+/*
+ * Without a divide instruction (ZL_MUL32_ONLY) a ZL_KIND_TINY record's
+ * edges are walked as zl_tiny_draw walks them (tiny_walk, zl_span.h): an
+ * edge's x holds its column ceil(N / den) instead of N, and the remainder
+ * column * den - N goes to fields a tiny record leaves unused: lower.rem for
+ * the long edge (left), lower.rstep for the current short one (right). The
+ * lower short edge keeps N until row mid, where it is divided once: three
+ * divisions a triangle instead of two a row.
+ */
+static ZL_ALWAYS_INLINE void tiny_walk_start(zl_edge *e, int32_t *r)
+{
+    int32_t x = tiny_x(e->x, e->den);
+    *r = x * e->den - e->x;
+    e->x = x;
+}
+#endif
+
 /* Triangle t of a MESH_FLAT mesh with its vertices c cached inside, which
  * planning kept: the record zl_tri_polygon_geom + zl_tri_shade +
  * zl_tri_piece give (one piece, no offset, the lit flat colour), set up as
@@ -50,6 +68,12 @@ static ZL_ALWAYS_INLINE int setup_cached(const zl_frame_mesh *m, const zl_source
         set = zl_tiny_setup_record(a, c[0], c[1], c[2], s->width, s->height);
         if (set == 0)
             return 0;
+#if ZL_MUL32_ONLY
+        if (set > 0) {
+            tiny_walk_start(&a->left, &a->lower.rem);
+            tiny_walk_start(&a->right, &a->lower.rstep);
+        }
+#endif
     }
     if (set < 0 && !zl_tri_setup_flat(a, c[0], c[1], c[2], &m->state, s->width, s->height))
         return 0;
@@ -295,6 +319,21 @@ static ZL_ALWAYS_INLINE void tiny_row(const zl_active *a, const zl_span_state *s
 static ZL_ALWAYS_INLINE int tiny_step(zl_active *a)
 {
     int32_t row = a->row + 1;
+#if ZL_MUL32_ONLY
+    a->right.rem = (int32_t)((uint32_t)a->right.rem + (uint32_t)a->right.rstep);
+    a->row = (int16_t)row;
+    if (row >= a->end)
+        return 0;
+    if (row == a->mid) { /* the plane in right.rem and rstep stays */
+        a->right.x = a->lower.x;
+        a->right.step = a->lower.step;
+        a->right.den = a->lower.den;
+        tiny_walk_start(&a->right, &a->lower.rstep);
+    } else {
+        tiny_walk(&a->right.x, &a->lower.rstep, a->right.step, a->right.den);
+    }
+    tiny_walk(&a->left.x, &a->lower.rem, a->left.step, a->left.den);
+#else
     a->left.x += a->left.step;
     a->right.x += a->right.step;
     a->right.rem = (int32_t)((uint32_t)a->right.rem + (uint32_t)a->right.rstep);
@@ -306,6 +345,7 @@ static ZL_ALWAYS_INLINE int tiny_step(zl_active *a)
         a->right.step = a->lower.step;
         a->right.den = a->lower.den;
     }
+#endif
     return 1;
 }
 
@@ -365,7 +405,15 @@ static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint
         m = uniform ? &meshes[0] : &meshes[a->mesh];
         if (a->kind == ZL_KIND_TINY) { /* only in MESH_ROW565 meshes */
             int32_t x0, x1;
+#if ZL_MUL32_ONLY
+            { /* tiny_cols with the walked columns (tiny_walk_start) */
+                int32_t lo = a->lower_is_left ? a->left.x : a->right.x, hi = a->lower_is_left ? a->right.x : a->left.x;
+                x0 = lo < 0 ? 0 : lo;
+                x1 = hi > m->span.width ? m->span.width : hi;
+            }
+#else
             tiny_cols(a->left.x, a->left.den, a->right.x, a->right.den, a->lower_is_left, m->span.width, &x0, &x1);
+#endif
             if (x0 < x1) {
                 if (uniform)
                     tiny_row(a, &m->span, func, x0, x1, crow, zrow);

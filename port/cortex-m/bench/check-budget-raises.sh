@@ -1,7 +1,9 @@
 #!/bin/sh
-# Budget integrity (issue 13): fails when budgets.txt raises a budget above
-# the base branch's without a "# raised from OLD: REASON" line directly above
-# it (what `measure.sh --update-budgets --allow-raise REASON` writes).
+# Budget integrity (issue 13): fails when budgets.txt (Cortex-M4) or
+# budgets-m0.txt (Cortex-M0) raises a budget above the base branch's without
+# a "# raised from OLD: REASON" line directly above it (what
+# `measure.sh --update-budgets --allow-raise REASON` writes; measure-m0.sh
+# likewise). A file the base branch does not have yet raises nothing.
 #
 #   port/cortex-m/bench/check-budget-raises.sh [BASE_REF]
 #
@@ -12,7 +14,6 @@
 set -eu
 cd "$(dirname "$0")/../../.."
 base=${1:-${ZLINE_BUDGET_BASE:-main}}
-f=port/cortex-m/bench/budgets.txt
 tmp=${TMPDIR:-/tmp}/zl-budgets-base.$$
 trap 'rm -f "$tmp"' EXIT
 for ref in "$base" "origin/$base" HEAD; do
@@ -21,19 +22,24 @@ for ref in "$base" "origin/$base" HEAD; do
         break
     fi
 done
-if ! git show "$base:$f" >"$tmp" 2>/dev/null; then
-    echo "check-budget-raises: no $f at git ref $base: skipped"
+if ! git rev-parse --verify -q "$base^{commit}" >/dev/null 2>&1; then
+    echo "check-budget-raises: no git ref $base: skipped"
     exit 77
 fi
-awk -v base="$base" '
-    NR == FNR { if ($0 !~ /^#/ && NF == 3) old[$1 " " $2] = $3; next }
-    /^#/ { reason = ($0 ~ /^# raised from [0-9]+: [^ ]/); next }
-    NF == 3 {
-        k = $1 " " $2
-        if ((k in old) && $3 + 0 > old[k] + 0) {
-            if (reason) printf "raised with a reason: %s %s -> %s\n", k, old[k], $3
-            else { printf "RAISED WITHOUT A REASON: %s %s -> %s (over %s)\n", k, old[k], $3, base; bad = 1 }
+status=0
+for f in port/cortex-m/bench/budgets.txt port/cortex-m/bench/budgets-m0.txt; do
+    git show "$base:$f" >"$tmp" 2>/dev/null || : >"$tmp"
+    awk -v base="$base" '
+        FILENAME == ARGV[1] { if ($0 !~ /^#/ && NF == 3) old[$1 " " $2] = $3; next }
+        /^#/ { reason = ($0 ~ /^# raised from [0-9]+: [^ ]/); next }
+        NF == 3 {
+            k = $1 " " $2
+            if ((k in old) && $3 + 0 > old[k] + 0) {
+                if (reason) printf "raised with a reason: %s %s -> %s\n", k, old[k], $3
+                else { printf "RAISED WITHOUT A REASON: %s %s -> %s (over %s)\n", k, old[k], $3, base; bad = 1 }
+            }
+            reason = 0
         }
-        reason = 0
-    }
-    END { if (!bad) print "check-budget-raises: no budget raised without a reason (against " base ")"; exit bad }' "$tmp" "$f"
+        END { if (!bad) print "check-budget-raises: " FILENAME ": no budget raised without a reason (against " base ")"; exit bad }' "$tmp" "$f" || status=1
+done
+exit $status

@@ -79,29 +79,8 @@ if [ $update -eq 1 ]; then
     # order. A suggestion above the old budget is a raise: kept out without
     # --allow-raise, else written with its reason.
     cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort >"$out/suggest.txt"
-    awk -v reason="$raise_reason" -v suggest="$out/suggest.txt" '
-        BEGIN { header = 1 }
-        /^#/ { if (header) head = head $0 "\n"; else note = note $0 "\n"; next }
-        NF == 3 { header = 0; k = $1 " " $2; old[k] = $3; notes[k] = note; note = ""; keys[k] = 1; next }
-        END {
-            printf "%s", head
-            while ((getline l < suggest) > 0) {
-                split(l, f, " "); k = f[1] " " f[2]; v = f[3]; seen[k] = 1
-                if (k in old && v > old[k] + 0) {
-                    if (reason == "") {
-                        printf "measure.sh: %s would rise %s -> %s: kept (--allow-raise REASON to raise)\n", k, old[k], v > "/dev/stderr"
-                        v = old[k]
-                    } else {
-                        notes[k] = notes[k] "# raised from " old[k] ": " reason "\n"
-                    }
-                }
-                out[k] = notes[k] k " " v
-            }
-            for (k in keys) if (!(k in seen)) out[k] = notes[k] k " " old[k] # not measured here: unchanged
-            n = 0; for (k in out) list[++n] = k
-            for (i = 2; i <= n; i++) { x = list[i]; for (j = i - 1; j >= 1 && list[j] > x; j--) list[j + 1] = list[j]; list[j + 1] = x }
-            for (i = 1; i <= n; i++) print out[list[i]]
-        }' port/cortex-m/bench/budgets.txt >"$out/budgets.txt"
+    sh port/cortex-m/bench/update-budgets.sh port/cortex-m/bench/budgets.txt "$out/suggest.txt" "$raise_reason" \
+        >"$out/budgets.txt"
     cp "$out/budgets.txt" port/cortex-m/bench/budgets.txt
     echo "measure.sh: budgets.txt updated" >&2
 fi

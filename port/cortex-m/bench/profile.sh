@@ -13,7 +13,10 @@
 #   profiles the frame-mode frame drawn through the vertex cache; TAGS=smooth-O2 SCENE=bunny_smooth
 #   KEY=draw the bunny with per-vertex colours of bench_smooth.c)
 #
-# BUILD_DIR defaults to build/cortex-m4-profile. Check: the profile's total is
+# CPU=cortex-m0 profiles the Cortex-M0 build instead (QEMU microbit, -icount
+# shift=7, the nRF51 timer: bench_timer_nrf51.c; the plugin's instruction
+# counts hold for any Thumb code, its cycle model is the M4's and unused here).
+# BUILD_DIR defaults to build/CPU-profile (cortex-m4 unless CPU says). Check: the profile's total is
 # the plugin's count between the two marks, which includes mark()'s own
 # instructions; the timer's interval subtracts them (calibrated overhead), so
 #   profile total - timer interval = n * e - (n - 1) * overhead
@@ -21,7 +24,8 @@
 # and 1) and overhead the timer's ("# timer:" line). The script checks both.
 set -eu
 cd "$(dirname "$0")/../../.."
-build=${1:-build/cortex-m4-profile}
+cpu=${CPU:-cortex-m4}
+build=${1:-build/$cpu-profile}
 scene=${SCENE:-bunny}
 top=${TOP:-20}
 key=${KEY:-total}
@@ -31,8 +35,15 @@ out=$build/profile
 mkdir -p "$out"
 
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
-    -DZLINE_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 bench_smooth_O2 >/dev/null
+    -DZLINE_CPU="$cpu" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# bench_smooth is a Cortex-M4/M3 firmware only
+smooth=; [ "$cpu" = cortex-m0 ] || smooth=bench_smooth_O2
+cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 $smooth >/dev/null
+if [ "$cpu" = cortex-m0 ]; then
+    board="-M microbit -global nrf51-soc.flash-size=4194304 -global nrf51-soc.sram-size=4194304"; shift=7
+else
+    board="-M mps2-an386"; shift=6
+fi
 
 plugin=$out/m4timing.so
 if ! ${CC:-cc} -std=c99 -O2 -shared -fPIC -o "$plugin" tools/qemu-m4-timing/m4timing.c 2>"$out/plugin.log"; then
@@ -46,8 +57,9 @@ for tag in $tags; do
     mode=${tag%-*}; opt=${tag#*-}
     elf=$bench/bench_${mode}_${opt}.elf
     mark=$(arm-none-eabi-nm "$elf" | awk '$3 == "mark" { print "0x" $1 }')
-    set -- qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
-        -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=6
+    # shellcheck disable=SC2086 # $board splits on spaces
+    set -- qemu-system-arm $board -nographic -monitor none -serial none \
+        -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi -icount shift=$shift
     # first run: the mark numbers of the scene's frame (runs are deterministic)
     "$@" -kernel "$elf" >"$out/$tag.pass1.txt" || true
     iv=$(awk -v s="$scene" -v key="$key" '$1 == "INTERVAL" && $3 == s && $4 == key { print $6, $7; exit }' "$out/$tag.pass1.txt")
