@@ -8,8 +8,9 @@
  *   scanline              zl_frame_render with one-row bands, RAM as small
  *                         as the scene allows (zl_frame_needs)
  * Each frame includes its clear. Every frame is timed on its own
- * (CLOCK_MONOTONIC) after a warm-up; the table gives the median, which one
- * preempted frame does not move, and the fastest frame.
+ * (CLOCK_MONOTONIC) after a warm-up, the modes taking turns in rounds; the
+ * table gives the median, which a few preempted frames do not move, and
+ * the fastest frame.
  *
  *   zline-bench-time MODEL [FRAMES]        FRAMES defaults to 2001
  *
@@ -113,21 +114,27 @@ static int by_value(const void *a, const void *b)
 }
 
 typedef void (*draw_fn)(const scene *);
-
-/* Median and fastest of `frames` individually timed frames. */
-static void time_frames(draw_fn draw, const scene *s, double *ms, int frames, double *median, double *fastest)
+/* Frame times of every mode, interleaved: ROUND_FRAMES frames of each mode
+ * in turn until each has `frames`, so a slow spell of the machine (another
+ * process, a virtual machine's neighbour) falls on every mode alike. */
+#define ROUND_FRAMES 25
+static void time_modes(const draw_fn *draws, const scene *s, unsigned modes, double **ms, int frames)
 {
-    int i;
-    for (i = 0; i < WARMUP_FRAMES; i++)
-        draw(s);
-    for (i = 0; i < frames; i++) {
-        double t0 = now_ms();
-        draw(s);
-        ms[i] = now_ms() - t0;
+    int done = 0, i;
+    unsigned m;
+    for (m = 0; m < modes; m++)
+        for (i = 0; i < WARMUP_FRAMES; i++)
+            draws[m](&s[m]);
+    while (done < frames) {
+        int n = frames - done < ROUND_FRAMES ? frames - done : ROUND_FRAMES;
+        for (m = 0; m < modes; m++)
+            for (i = 0; i < n; i++) {
+                double t0 = now_ms();
+                draws[m](&s[m]);
+                ms[m][done + i] = now_ms() - t0;
+            }
+        done += n;
     }
-    qsort(ms, (size_t)frames, sizeof *ms, by_value);
-    *median = ms[frames / 2];
-    *fastest = ms[0];
 }
 
 int main(int argc, char **argv)
@@ -137,7 +144,7 @@ int main(int argc, char **argv)
     static const draw_fn draws[] = {draw_frame, draw_frame, draw_scanline};
     zl_obj obj;
     scene s[3];
-    double *ms;
+    double *ms[3];
     int frames = argc == 3 ? atoi(argv[2]) : 2001, failed = 0;
     unsigned m;
     if (argc < 2 || argc > 3 || frames < 1 || frames > 1000000) {
@@ -152,8 +159,9 @@ int main(int argc, char **argv)
     s[1].vertex_cache = NULL;
     s[1].vertex_cache_bytes = 0;
     s[2] = s[1];
-    ms = malloc((size_t)frames * sizeof *ms);
-    if (s[0].vertex_cache == NULL || ms == NULL || scanline_setup(&s[2]) == NULL)
+    for (m = 0; m < 3; m++)
+        ms[m] = malloc((size_t)frames * sizeof *ms[m]);
+    if (s[0].vertex_cache == NULL || ms[0] == NULL || ms[1] == NULL || ms[2] == NULL || scanline_setup(&s[2]) == NULL)
         return 2;
     for (m = 0; m < 3; m++) {
         draws[m](&s[m]);
@@ -165,14 +173,15 @@ int main(int argc, char **argv)
         }
     }
     printf("| mode | median ms/frame | fastest ms/frame |\n|---|---:|---:|\n");
+    time_modes(draws, s, 3, ms, frames);
     for (m = 0; m < 3; m++) {
-        double median, fastest;
-        time_frames(draws[m], &s[m], ms, frames, &median, &fastest);
-        printf("| %s | %.4f | %.4f |\n", names[m], median, fastest);
+        qsort(ms[m], (size_t)frames, sizeof *ms[m], by_value);
+        printf("| %s | %.4f | %.4f |\n", names[m], ms[m][frames / 2], ms[m][0]);
     }
-    printf("\n%d frames per mode after %d warm-up frames, %dx%d RGB565.\n", frames, WARMUP_FRAMES, BENCH_W,
-           BENCH_H);
-    free(ms);
+    printf("\n%d frames per mode after %d warm-up frames, in rounds of %d a mode, %dx%d RGB565.\n", frames,
+           WARMUP_FRAMES, ROUND_FRAMES, BENCH_W, BENCH_H);
+    for (m = 0; m < 3; m++)
+        free(ms[m]);
     free(s[0].vertex_cache);
     free(s[2].work);
     zl_obj_free(&obj);
