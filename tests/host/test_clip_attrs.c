@@ -34,6 +34,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_linear.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -85,42 +86,6 @@ typedef struct {
     double worst_color, worst_texel; /* texels from the reference coordinate to the sampled texel */
     double worst_any;                /* the same over every pixel, those near a boundary too */
 } stats;
-
-static int solve3(long double m[3][3], long double r[3], long double b[3])
-{
-    int i, j, k;
-    for (i = 0; i < 3; i++) {
-        int p = i;
-        for (j = i + 1; j < 3; j++)
-            if (fabsl(m[j][i]) > fabsl(m[p][i]))
-                p = j;
-        if (m[p][i] == 0)
-            return 0;
-        for (k = 0; k < 3; k++) {
-            long double t = m[i][k];
-            m[i][k] = m[p][k];
-            m[p][k] = t;
-        }
-        {
-            long double t = r[i];
-            r[i] = r[p];
-            r[p] = t;
-        }
-        for (j = i + 1; j < 3; j++) {
-            long double f = m[j][i] / m[i][i];
-            for (k = i; k < 3; k++)
-                m[j][k] -= f * m[i][k];
-            r[j] -= f * r[i];
-        }
-    }
-    for (i = 2; i >= 0; i--) {
-        long double s = r[i];
-        for (k = i + 1; k < 3; k++)
-            s -= m[i][k] * b[k];
-        b[i] = s / m[i][i];
-    }
-    return 1;
-}
 
 typedef struct {
     zl_vec4 v[3];        /* clip space as the transform gives it */
@@ -178,7 +143,7 @@ static int reference(const tri_ref *t, int i, int j, int linear, long double out
     r[0] = t->pixel_space ? X : 2 * X / W - 1;
     r[1] = t->pixel_space ? Y : 1 - 2 * Y / H;
     r[2] = 1;
-    if (!solve3(m, r, b))
+    if (!zt_solve3(m, r, b))
         return 0;
     for (k = 0; k < 3; k++) {
         sb += b[k];

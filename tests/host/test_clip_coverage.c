@@ -35,6 +35,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_linear.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -159,43 +160,6 @@ static void make_box(mesh_buf *m, const long double c[3], const long double h[3]
 
 /* ------------------------------------------------------- the reference */
 
-/* Solve A x = r (3x3, partial pivoting). 0 when singular. */
-static int solve3(long double a[3][3], long double r[3], long double x[3])
-{
-    int i, j, k;
-    for (i = 0; i < 3; i++) {
-        int p = i;
-        for (j = i + 1; j < 3; j++)
-            if (fabsl(a[j][i]) > fabsl(a[p][i]))
-                p = j;
-        if (a[p][i] == 0)
-            return 0;
-        for (k = 0; k < 3; k++) {
-            long double t = a[i][k];
-            a[i][k] = a[p][k];
-            a[p][k] = t;
-        }
-        {
-            long double t = r[i];
-            r[i] = r[p];
-            r[p] = t;
-        }
-        for (j = i + 1; j < 3; j++) {
-            long double f = a[j][i] / a[i][i];
-            for (k = i; k < 3; k++)
-                a[j][k] -= f * a[i][k];
-            r[j] -= f * r[i];
-        }
-    }
-    for (i = 2; i >= 0; i--) {
-        long double s = r[i];
-        for (k = i + 1; k < 3; k++)
-            s -= a[i][k] * x[k];
-        x[i] = s / a[i][i];
-    }
-    return 1;
-}
-
 /* Clip-space rows of the projection, in model units (a pixel-space mesh:
  * x, y, z, 1 with the window position as its "device" position). */
 typedef struct {
@@ -227,7 +191,7 @@ static int sight_point(const proj_ref *p, long double X, long double Y, const lo
     r[0] = -(p->m[0][3] - xn * p->m[3][3]);
     r[1] = -(p->m[1][3] - yn * p->m[3][3]);
     r[2] = -row[3];
-    return solve3(a, r, out);
+    return zt_solve3(a, r, out);
 }
 
 static void sub3(const long double *a, const long double *b, long double *r)

@@ -26,6 +26,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_linear.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -58,44 +59,6 @@ typedef struct {
     double max_depth_err, max_color_err;
 } stats;
 
-/* Solve M b = n in long double (partial pivoting). Returns 0 if singular. */
-static int solve3(long double m[3][3], long double r[3], long double b[3])
-{
-    int i, j, k;
-    for (i = 0; i < 3; i++) {
-        int p = i;
-        for (j = i + 1; j < 3; j++)
-            if (fabsl(m[j][i]) > fabsl(m[p][i]))
-                p = j;
-        if (m[p][i] == 0)
-            return 0;
-        if (p != i) {
-            long double t;
-            for (k = 0; k < 3; k++) {
-                t = m[i][k];
-                m[i][k] = m[p][k];
-                m[p][k] = t;
-            }
-            t = r[i];
-            r[i] = r[p];
-            r[p] = t;
-        }
-        for (j = i + 1; j < 3; j++) {
-            long double f = m[j][i] / m[i][i];
-            for (k = i; k < 3; k++)
-                m[j][k] -= f * m[i][k];
-            r[j] -= f * r[i];
-        }
-    }
-    for (i = 2; i >= 0; i--) {
-        long double s = r[i];
-        for (k = i + 1; k < 3; k++)
-            s -= m[i][k] * b[k];
-        b[i] = s / m[i][i];
-    }
-    return 1;
-}
-
 typedef struct {
     zl_vec4 v[3];      /* clip space as the core computes it */
     uint8_t rgb[3][3]; /* vertex colours */
@@ -122,7 +85,7 @@ static int reference(const tri_ref *t, int i, int j, long double *depth, long do
         r[1] = 1 - 2 * Y / H;
     }
     r[2] = 1;
-    if (!solve3(m, r, b))
+    if (!zt_solve3(m, r, b))
         return 0;
     for (k = 0; k < 3; k++) {
         sw += b[k] * t->v[k].w;
