@@ -86,9 +86,7 @@ for tag in frame-O2 scanline-O2; do
 done >"$out/results.txt"
 
 R=$out/results.txt
-get() { awk -v t="$1" -v s="$2" -v k="$3" '$1 == t && $2 == s && $3 == k { print $4; exit }' "$R"; }
-num() { awk -v v="$1" 'BEGIN { if (v == "") print "n/a"; else { s = sprintf("%d", v); o = ""; while (length(s) > 3) { o = "," substr(s, length(s) - 2) o; s = substr(s, 1, length(s) - 3) } print s o } }'; }
-div() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || b == 0) print "n/a"; else printf "%.1f", a / b }'; }
+. port/cortex-m/bench/table-lib.sh
 scenes="bunny fill fill_gouraud tris"
 
 echo "### Summary, Cortex-M0 -O2 (README)"

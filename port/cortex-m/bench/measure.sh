@@ -122,9 +122,7 @@ for tag in $tags; do
 done >"$out/results.txt"
 
 R=$out/results.txt
-get() { awk -v t="$1" -v s="$2" -v k="$3" '$1 == t && $2 == s && $3 == k { print $4; exit }' "$R"; }
-num() { awk -v v="$1" 'BEGIN { if (v == "") print "n/a"; else { s = sprintf("%d", v); o = ""; while (length(s) > 3) { o = "," substr(s, length(s) - 2) o; s = substr(s, 1, length(s) - 3) } print s o } }'; }
-div() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || b == 0) print "n/a"; else printf "%.1f", a / b }'; }
+. port/cortex-m/bench/table-lib.sh
 scenes="bunny fill fill_gouraud tris bunny_clip"
 
 echo "### Instructions per frame (exact: QEMU -icount, TIMER0), Cortex-M4 (mps2-an386)"
