@@ -37,7 +37,8 @@ from mutations import MUTATIONS  # noqa: E402
 SEARCH_DIRS = ("core", "port/host")
 # Slow or unrelated tests left out: the cross-compiler symbol check, the
 # tools' own checks and the fuzz corpus replays (the unit tests cover them).
-DEFAULT_EXCLUDE = "core_no_float|stack_bound|depthcalc|obj2c|visbench|zline_bsp"
+# mutations_current would "kill" every mutant (its text is gone from the copy).
+DEFAULT_EXCLUDE = "core_no_float|stack_bound|depthcalc|obj2c|visbench|zline_bsp|mutations_current"
 
 
 def find_file(tree, basename):
@@ -75,6 +76,18 @@ def failed_tests(out):
     return names
 
 
+def check_current(chosen):
+    """The CTest mutations_current: a mutation whose text the code no longer
+    has would be reported stale by the daily sample in CI, so say so at once,
+    where the code was changed."""
+    stale = [m for m in chosen
+             if len(find_file(ROOT, m[1])) != 1 or open(find_file(ROOT, m[1])[0], encoding="utf-8").read().count(m[2]) != 1]
+    for mid, base, find, _repl, _desc in stale:
+        print("mutate: %s is stale: %r is not in %s exactly once (update tools/mutation/mutations.py)" % (mid, find, base))
+    print("mutate: %d of %d mutations current" % (len(chosen) - len(stale), len(chosen)))
+    return 1 if stale else 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--sample", type=int, default=0, help="run only N mutations chosen by --seed")
@@ -86,9 +99,14 @@ def main():
     ap.add_argument("--markdown", action="store_true", help="print the result as a Markdown table")
     ap.add_argument("--keep", action="store_true", help="keep the temporary tree (for debugging)")
     ap.add_argument("--shared", default=os.path.join(os.path.dirname(ROOT), "shared"), help="ZLINE_SHARED_DIR")
+    ap.add_argument("--check-current", action="store_true",
+                    help="only check that every mutation's text is still in the tree, once (no build): "
+                         "exit 1 naming the stale ones")
     args = ap.parse_args()
 
     chosen = [m for m in MUTATIONS if args.only in m[0]]
+    if args.check_current:
+        return check_current(chosen)
     if args.sample:
         chosen = random.Random(args.seed).sample(chosen, min(args.sample, len(chosen)))
     start = time.time()
