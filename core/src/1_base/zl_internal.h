@@ -257,6 +257,16 @@ static inline uint32_t zl_div255_small(uint32_t x)
     return (x * 0x8081u) >> 23;
 }
 
+/* 1 when the four edge-vector components are each within +-2^14, so that
+ * each product of two is within 2^28 and a cross product (the window area
+ * of a triangle from the int16 vertex cache) is exact in 32 bits: the
+ * common case, taken where ZL_MUL32_ONLY instead of two __aeabi_lmul. */
+static inline int zl_area_fits32(int32_t ax, int32_t ay, int32_t bx, int32_t by)
+{
+    return ((uint32_t)(ax + 16384) | (uint32_t)(ay + 16384) | (uint32_t)(bx + 16384) | (uint32_t)(by + 16384)) <
+           32768u;
+}
+
 /* a b for 32-bit a, b from four 16x16-bit products (each fits 32 bits:
  * the halves are floor(v / 2^16) and v mod 2^16), for cores without a
  * 32x32->64 multiply, where GCC calls __aeabi_lmul (about 42 instructions)

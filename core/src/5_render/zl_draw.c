@@ -351,10 +351,8 @@ static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl
         }
         y0 = c[0]->y;
 #if ZL_MUL32_ONLY
-        /* no 64-bit multiply: differences within +-2^14 (the common case)
-         * keep the products within 2^28, the area exact in 32 bits */
-        if ((((uint32_t)(x1 - x0 + 16384)) | ((uint32_t)(c[2]->y - y0 + 16384)) | ((uint32_t)(x2 - x0 + 16384)) |
-             ((uint32_t)(c[1]->y - y0 + 16384))) < 32768u)
+        /* no 64-bit multiply: the area in 32 bits where it is exact there */
+        if (zl_area_fits32(x1 - x0, c[2]->y - y0, x2 - x0, c[1]->y - y0))
             area = (x1 - x0) * (c[2]->y - y0) - (x2 - x0) * (c[1]->y - y0);
         else
 #endif
