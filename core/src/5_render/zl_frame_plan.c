@@ -108,23 +108,22 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
                                             uint16_t height, int32_t *first, int32_t *end)
 {
     int32_t ymin = a->y, xmin = a->x, ymax, xmax;
-    int64_t p, q;
 #if ZL_MUL32_ONLY
-    /* no 64-bit multiply: the two products in 32 bits where they are exact
-     * there (two __aeabi_lmul a triangle saved on ARMv6-M) */
+    /* no 64-bit multiply: products and compare in 32 bits where they are
+     * exact there (two __aeabi_lmul a triangle saved on ARMv6-M) */
     if (zl_area_fits32(b->x - a->x, c->y - a->y, c->x - a->x, b->y - a->y)) {
-        p = (b->x - a->x) * (c->y - a->y);
-        q = (c->x - a->x) * (b->y - a->y);
+        int32_t p = (b->x - a->x) * (c->y - a->y), q = (c->x - a->x) * (b->y - a->y);
+        if (p == q || (p < q ? -1 : 1) == cull_sign)
+            return 0;
     } else
 #endif
     {
-        p = (int64_t)(b->x - a->x) * (c->y - a->y);
-        q = (int64_t)(c->x - a->x) * (b->y - a->y);
+        int64_t p = (int64_t)(b->x - a->x) * (c->y - a->y), q = (int64_t)(c->x - a->x) * (b->y - a->y);
+        if (p == q || (p < q ? -1 : 1) == cull_sign)
+            return 0;
     }
     ymax = ymin;
     xmax = xmin;
-    if (p == q || (p < q ? -1 : 1) == cull_sign)
-        return 0;
     if (b->y < ymin)
         ymin = b->y;
     if (b->y > ymax)
