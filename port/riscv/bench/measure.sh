@@ -121,16 +121,16 @@ done
 echo
 echo "### Frame mode by phase, $arch (instructions; the stages run separately, see bench.c)"
 echo
-echo "| scene | opt | clear | transform/clip | setup | rasterisation | other | transform/clip per triangle | setup per drawn triangle | rasterisation per pixel |"
+echo "| scene | opt | clear | transform/clip | setup | rasterisation | general path, whole | transform/clip per triangle | setup per drawn triangle | rasterisation per pixel |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for s in $scenes; do
     for opt in O2 Os; do
         tag=frame-$opt
         v1=$(get $tag $s v1_polygons); v2=$(get $tag $s v2_setup); v3=$(get $tag $s v3_rows)
-        draw=$(get $tag $s draw); clear=$(get $tag $s clear)
+        clear=$(get $tag $s clear)
         tris=$(get $tag $s triangles); drawn=$(get $tag $s drawn); px=$(get $tag $s pixels)
-        setup=$((v2 - v1)); raster=$((v3 - v2)); other=$((draw - v3))
-        echo "| $s | -$opt | $(num $clear) | $(num $v1) | $(num $setup) | $(num $raster) | $(num $other) | $(div $v1 $tris) | $(div $setup $drawn) | $(div $raster $px) |"
+        setup=$((v2 - v1)); raster=$((v3 - v2))
+        echo "| $s | -$opt | $(num $clear) | $(num $v1) | $(num $setup) | $(num $raster) | $(num $v3) | $(div $v1 $tris) | $(div $setup $drawn) | $(div $raster $px) |"
     done
 done
 echo
