@@ -3,7 +3,7 @@
 
     python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
                                   [--riscv BUILD_DIR] [--riscv-only] [--cortex-m0 BUILD_DIR]
-                                  [--slots BUILD_PREFIX]
+                                  [--slots BUILD_PREFIX] [--core-size WORK_DIR]
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
 KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny and
@@ -12,7 +12,9 @@ tools/visbench/measure.sh (a host build with the render command's targets, and v
 unless --riscv names one), with --cortex-m0 also port/cortex-m/bench/measure-m0.sh (a
 ZLINE_CPU=cortex-m0 build; without --cortex-m, that alone: the Cortex-M4 measurement runs only
 when --cortex-m names its build or no --cortex-m0 is given), with --slots also port/cortex-m/bench/slot-sweep.sh (five Cortex-M4
-builds, BUILD_PREFIX-N; the table is not part of --check, which would take minutes), splits their output into sections ("### title"
+builds, BUILD_PREFIX-N; the table is not part of --check, which would take minutes), with
+--core-size also tools/size/core-size.sh (the whole library's flash per CPU and float ABI, the
+table of docs/PORTING.md; about two minutes, not part of --check either), splits their output into sections ("### title"
 plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
@@ -35,7 +37,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DOCS = ["README.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md", "port/riscv/README.md"]
+DOCS = ["README.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md", "docs/PORTING.md", "port/riscv/README.md"]
 # README visibility table row -> bench_vis.c method
 VIS_ROWS = {
     "z-buffer, frame mode": "zbuffer",
@@ -197,12 +199,13 @@ def m0_profiles(build):
 
 def main():
     build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
-    cortex_m0, cortex_m_named, slots = None, False, None
+    cortex_m0, cortex_m_named, slots, core_size = None, False, None, None
     args = sys.argv[1:]
     check = False
     if args and args[0] == "--check":
         check, args = True, args[1:]
-    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only", "--cortex-m0", "--slots"):
+    while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only", "--cortex-m0", "--slots",
+                               "--core-size"):
         if args[0] == "--riscv-only":
             cortex_m, riscv = False, riscv or "build/rv32imac-bench"
             args = args[1:]
@@ -217,10 +220,12 @@ def main():
             host = args[1]
         elif args[0] == "--slots":
             slots = args[1]
+        elif args[0] == "--core-size":
+            core_size = args[1]
         else:
             riscv = args[1]
         args = args[2:]
-    if cortex_m0 and not cortex_m_named:
+    if (cortex_m0 or core_size) and not cortex_m_named:
         cortex_m = False
     text = ""
     if cortex_m0:
@@ -236,6 +241,8 @@ def main():
         text += "\n" + run(["sh", "port/riscv/bench/measure.sh", "rv32imac", riscv])
     if slots:
         text += "\n" + run(["sh", "port/cortex-m/bench/slot-sweep.sh", slots])
+    if core_size:
+        text += "\n### Core size per CPU (tools/size/core-size.sh)\n\n" + run(["sh", "tools/size/core-size.sh", core_size])
     if cortex_m:
         text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
         vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})
