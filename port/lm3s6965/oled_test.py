@@ -267,6 +267,9 @@ def run_qemu(args, deadline, sock_path):
         print("MISMATCH " + mismatches[-1])
     elif qemu_err.strip():
         print("QEMU stderr: " + qemu_err.strip())
+    # the firmware's own lines (RAM map, counts) for readme_figures.py
+    with open(os.path.join(args.dir, "firmware.log"), "w") as f:
+        f.write("\n".join(log) + "\n")
     if code != 0:
         raise Broken("the firmware exited with %d" % code)
     expected = len([f for f in os.listdir(os.path.join(args.dir, "reference")) if f.endswith(".pgm")])
