@@ -20,6 +20,8 @@
 #include "unity.h"
 #include "zline/zl_visibility.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -30,10 +32,7 @@ static uint32_t rng = 12345;
 
 static unsigned next_rand(void)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
+    return zt_rand(&rng);
 }
 
 /* ------------------------------------------------------------ targets */
@@ -47,14 +46,7 @@ static uint8_t bg[W * H * 3];
 static void init_ctx(zl_context *c, void *col, uint16_t *dep, zl_format fmt)
 {
     zl_target t;
-    memset(&t, 0, sizeof t);
-    t.color = col;
-    t.color_stride = (int32_t)(W * zl_format_bytes(fmt));
-    t.depth = dep;
-    t.depth_stride = W * 2;
-    t.width = W;
-    t.height = H;
-    t.format = (uint8_t)fmt;
+    zt_target_packed(&t, col, dep, W, H, fmt);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(c, &t));
 }
 
@@ -591,17 +583,9 @@ static void test_scanline_and_bands_identical_to_frame(void)
                 zl_frame fr;
                 cmp_ctx cc;
                 size_t bytes;
-                memset(&cfg, 0, sizeof cfg);
-                cfg.width = W;
-                cfg.height = H;
-                cfg.band_rows = bands[b];
-                cfg.format = (uint8_t)f;
-                cfg.color_buffers = 1;
+                zt_frame_config_of(&cfg, W, H, bands[b], (zl_format)f);
+                zt_frame_capacity(&cfg, NM, 3 * NM, NM, 8 * NM);
                 cfg.gouraud = 1;
-                cfg.max_meshes = NM;
-                cfg.max_vertices = 3 * NM;
-                cfg.max_triangles = NM;
-                cfg.max_active = 8 * NM;
                 cfg.styled = 1;
                 cfg.textured = 1;
                 bytes = zl_frame_bytes(&cfg);

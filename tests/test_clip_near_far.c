@@ -16,6 +16,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
 #include "zt_ref.h"
 
 #define W 48
@@ -68,15 +69,9 @@ static void plane_at(const plane_tri *t, int32_t i, int32_t j, int64_t *num, int
     *slope = a == 0 ? 0 : zt_ceil_div((gx > gy ? gx : gy) * px, a); /* per pixel, raw Q16 */
 }
 
-static int copy_band(void *user, const zl_band *b)
-{
-    uint16_t r;
-    (void)user;
-    for (r = 0; r < b->rows; r++)
-        memcpy(color + ((size_t)b->first_row + r) * W * 3, (const uint8_t *)b->color + (size_t)r * (size_t)b->color_stride,
-               W * 3);
-    return 0;
-}
+/* Scanline mode's colour lands where frame mode draws (the depth test is
+ * off, so only the colour is checked). */
+static zt_frame_copy to_color = {color, NULL};
 
 static void render(const zl_mesh *m, int scanline)
 {
@@ -87,31 +82,16 @@ static void render(const zl_mesh *m, int scanline)
     if (scanline) {
         zl_frame_config cfg;
         zl_frame f;
-        memset(&cfg, 0, sizeof cfg);
-        cfg.width = W;
-        cfg.height = H;
-        cfg.band_rows = 1;
-        cfg.format = ZL_FORMAT_RGB888;
-        cfg.color_buffers = 1;
-        cfg.max_meshes = 1;
-        cfg.max_vertices = 3;
-        cfg.max_triangles = 1;
-        cfg.max_active = 8;
+        zt_frame_config_of(&cfg, W, H, 1, ZL_FORMAT_RGB888);
+        zt_frame_capacity(&cfg, 1, 3, 1, 8);
         TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, m, NULL, &st));
-        TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, copy_band, NULL));
+        TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, zt_band_copy_fn, &to_color));
     } else {
         zl_target tg;
         zl_context ctx;
-        memset(&tg, 0, sizeof tg);
-        tg.color = color;
-        tg.color_stride = W * 3;
-        tg.depth = depth;
-        tg.depth_stride = W * 2;
-        tg.width = W;
-        tg.height = H;
-        tg.format = ZL_FORMAT_RGB888;
+        zt_target_packed(&tg, color, depth, W, H, ZL_FORMAT_RGB888);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
         ctx.state = st;

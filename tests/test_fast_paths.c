@@ -29,6 +29,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
 #include "zt_ref.h"
 
 void setUp(void) {}
@@ -102,28 +103,25 @@ static void random_mesh(int depth_kind, int wide)
     }
 }
 
-static void draw(uint16_t *color, uint16_t *depth, int cached, const zl_state *st, const zl_mesh *m)
+/* Draw m twice over a cleared RGB565 target, through the vertex cache
+ * `cache` when given (NULL: the general path). The second draw ties every
+ * fragment, and the cache starts empty again for it. */
+static void draw_twice(uint16_t *color, uint16_t *depth, void *cache, size_t cache_bytes, const zl_state *st,
+                       const zl_mesh *m, const zl_mat4 *mvp)
 {
     zl_target tg;
     zl_context ctx;
     zl_rgb bg = {1, 2, 3};
-    memset(&tg, 0, sizeof tg);
-    tg.color = color;
-    tg.color_stride = W * 2;
-    tg.depth = depth;
-    tg.depth_stride = W * 2;
-    tg.width = W;
-    tg.height = H;
-    tg.format = ZL_FORMAT_RGB565;
+    zt_target_packed(&tg, color, depth, W, H, ZL_FORMAT_RGB565);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
     ctx.state = *st;
-    if (cached) {
-        ctx.vertex_cache = vcache;
-        ctx.vertex_cache_bytes = sizeof vcache;
+    if (cache != NULL) {
+        ctx.vertex_cache = cache;
+        ctx.vertex_cache_bytes = cache_bytes;
     }
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, NULL));
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, NULL)); /* again: every fragment ties */
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp));
 }
 
 static void test_cached_small_triangles_equal_the_general_path(void)
@@ -145,8 +143,8 @@ static void test_cached_small_triangles_equal_the_general_path(void)
         st.cull = (scene & 2) ? ZL_CULL_BACK : ZL_CULL_NONE;
         st.light_on = (uint8_t)((scene >> 2) & 1);
         random_mesh((scene >> 3) & 3, (scene >> 5) & 1);
-        draw(color_a, depth_a, 1, &st, &m);
-        draw(color_b, depth_b, 0, &st, &m);
+        draw_twice(color_a, depth_a, vcache, sizeof vcache, &st, &m, NULL);
+        draw_twice(color_b, depth_b, NULL, 0, &st, &m, NULL);
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_b, depth_a, sizeof depth_a, "depth differs from the general path");
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_b, color_a, sizeof color_a, "colour differs from the general path");
         for (i = 0; i < W * H; i++)
@@ -162,31 +160,6 @@ static zl_fixed gpos[NP * 3];
 static uint16_t gidx[NS * 3];
 static uint8_t gcol[NS * 3];
 static uint32_t gcache[NP * 2]; /* ZL_VERTEX_CACHE_BYTES(NP) */
-
-static void draw_shared(uint16_t *color, uint16_t *depth, int cached, const zl_state *st, const zl_mesh *m,
-                        const zl_mat4 *mvp)
-{
-    zl_target tg;
-    zl_context ctx;
-    zl_rgb bg = {1, 2, 3};
-    memset(&tg, 0, sizeof tg);
-    tg.color = color;
-    tg.color_stride = W * 2;
-    tg.depth = depth;
-    tg.depth_stride = W * 2;
-    tg.width = W;
-    tg.height = H;
-    tg.format = ZL_FORMAT_RGB565;
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
-    ctx.state = *st;
-    if (cached) {
-        ctx.vertex_cache = gcache;
-        ctx.vertex_cache_bytes = sizeof gcache;
-    }
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp));
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp)); /* again: the cache starts empty each draw */
-}
 
 static void test_shared_vertices(void)
 {
@@ -241,8 +214,8 @@ static void test_shared_vertices(void)
             gcol[t * 3 + 1] = (uint8_t)next_rand();
             gcol[t * 3 + 2] = (uint8_t)next_rand();
         }
-        draw_shared(color_a, depth_a, 1, &st, &m, &mvp);
-        draw_shared(color_b, depth_b, 0, &st, &m, &mvp);
+        draw_twice(color_a, depth_a, gcache, sizeof gcache, &st, &m, &mvp);
+        draw_twice(color_b, depth_b, NULL, 0, &st, &m, &mvp);
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_a, depth_b, sizeof depth_a, "depth differs without the caller cache");
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_a, color_b, sizeof color_a, "colour differs without the caller cache");
         for (i = 0; i < W * H; i++)

@@ -38,6 +38,22 @@ static uint32_t rnd_divisor(void)
     return d | ((uint32_t)1 << (len - 1u));
 }
 
+/* n = q d + r for a random divisor d (every bit length), quotient q (on
+ * odd k its complement, so quotients near 2^32 as well) and remainder r;
+ * on k & 2 with `high_r` the remainder is one of the top four below d. */
+static void random_division(unsigned k, int high_r, uint64_t *n, uint32_t *d)
+{
+    uint32_t dv = rnd_divisor();
+    uint32_t q = rnd32() >> (rnd64() % 32u);
+    uint32_t r = (uint32_t)(rnd64() % dv);
+    if (k & 1u)
+        q = ~q;
+    if (high_r && (k & 2u))
+        r = dv - 1u - (r & 3u) % dv;
+    *n = (uint64_t)q * dv + r;
+    *d = dv;
+}
+
 static int udiv_ok(uint64_t n, uint32_t d)
 {
     uint32_t r = 0xDEADBEEFu;
@@ -51,6 +67,24 @@ static void check(uint64_t n, uint32_t d)
         TEST_FAIL_MESSAGE("zl_udiv64_32 differs from n / d");
 }
 
+/* The numerators both divisions are tried with for each edge-case divisor
+ * d: 0, 1, d - 1, d, and at the top of the range (the largest numerator
+ * with a 32-bit quotient, one d below it and one past that, (2^32 - 1) d,
+ * (d - 1) 2^32). */
+static void check_corners(uint32_t d, void (*check_one)(uint64_t, uint32_t))
+{
+    uint64_t top = ((uint64_t)d << 32) - 1u;
+    check_one(0, d);
+    check_one(1, d);
+    check_one(d, d);
+    check_one((uint64_t)d - 1u, d);
+    check_one(top, d);
+    check_one(top - d, d);
+    check_one(top - d + 1u, d);
+    check_one((uint64_t)0xFFFFFFFFu * d, d);
+    check_one((uint64_t)(d - 1u) << 32, d);
+}
+
 static void test_udiv_edge_cases(void)
 {
     static const uint32_t ds[] = {1u, 2u, 3u, 7u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u,
@@ -58,20 +92,11 @@ static void test_udiv_edge_cases(void)
     unsigned i;
     for (i = 0; i < sizeof ds / sizeof ds[0]; i++) {
         uint32_t d = ds[i];
-        uint64_t top = ((uint64_t)d << 32) - 1u; /* largest n with a 32-bit quotient */
-        check(0, d);
-        check(1, d);
-        check(d, d);
-        check((uint64_t)d - 1u, d);
+        check_corners(d, check);
         check(0xFFFFFFFFu, d);
         check(0x100000000ull, d < 2u ? 2u : d);
-        check(top, d);
-        check(top - d, d);
-        check(top - d + 1u, d);
-        check(((uint64_t)(d - 1u) << 32), d);
         check(((uint64_t)(d - 1u) << 32) | 0xFFFFu, d);
         check(((uint64_t)(d - 1u) << 32) | 0xFFFF0000u, d);
-        check((uint64_t)0xFFFFFFFFu * d, d);
         check((uint64_t)0x10000u * d + d - 1u, d);
     }
 }
@@ -81,12 +106,10 @@ static void test_udiv_random_quotients(void)
 {
     unsigned k;
     for (k = 0; k < 60000u; k++) {
-        uint32_t d = rnd_divisor();
-        uint32_t q = rnd32() >> (rnd64() % 32u);
-        uint32_t r = (uint32_t)(rnd64() % d);
-        if (k & 1u)
-            q = ~q; /* quotients near the top as well */
-        check((uint64_t)q * d + r, d);
+        uint64_t n;
+        uint32_t d;
+        random_division(k, 0, &n, &d);
+        check(n, d);
     }
 }
 
@@ -126,19 +149,8 @@ static void test_div_inv_corners(void)
     static const uint32_t ds[] = {1u, 2u, 3u, 5u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u,
                                   0x80000001u, 0xFFFFFFFEu, 0xFFFFFFFFu};
     unsigned i;
-    for (i = 0; i < sizeof ds / sizeof ds[0]; i++) {
-        uint32_t d = ds[i];
-        uint64_t top = ((uint64_t)d << 32) - 1u; /* the largest numerator allowed */
-        check_inv(0, d);
-        check_inv(1, d);
-        check_inv(d, d);
-        check_inv((uint64_t)d - 1u, d);
-        check_inv(top, d);
-        check_inv(top - d, d);
-        check_inv(top - d + 1u, d);
-        check_inv((uint64_t)0xFFFFFFFFu * d, d);
-        check_inv((uint64_t)(d - 1u) << 32, d);
-    }
+    for (i = 0; i < sizeof ds / sizeof ds[0]; i++)
+        check_corners(ds[i], check_inv);
     TEST_ASSERT_EQUAL_UINT(0, inv_failures);
 }
 
@@ -147,14 +159,10 @@ static void test_div_inv_random(void)
 {
     unsigned k;
     for (k = 0; k < 100000u; k++) {
-        uint32_t d = rnd_divisor();
-        uint32_t q = rnd32() >> (rnd64() % 32u);
-        uint32_t r = (uint32_t)(rnd64() % d);
-        if (k & 1u)
-            q = ~q;
-        if (k & 2u)
-            r = d - 1u - (r & 3u) % d;
-        check_inv((uint64_t)q * d + r, d);
+        uint64_t n;
+        uint32_t d;
+        random_division(k, 1, &n, &d);
+        check_inv(n, d);
     }
     TEST_ASSERT_EQUAL_UINT(0, inv_failures);
 }

@@ -10,6 +10,8 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -19,14 +21,11 @@ enum { W = 48, H = 40, NV = 24, NT = 16, NMESH = 3 };
 static uint32_t rng = 12345u;
 static uint32_t next_rand(void)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
+    return zt_rand(&rng);
 }
 static int32_t rand_range(int32_t lo, int32_t hi) /* inclusive */
 {
-    return lo + (int32_t)(next_rand() % (uint32_t)(hi - lo + 1));
+    return zt_rand_range(&rng, lo, hi);
 }
 
 typedef struct {
@@ -182,14 +181,7 @@ static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
     zl_target t;
     zl_context ctx;
     int i;
-    memset(&t, 0, sizeof t);
-    t.color = frame_color;
-    t.color_stride = (int32_t)(W * zl_format_bytes(fmt));
-    t.depth = frame_depth;
-    t.depth_stride = W * 2;
-    t.width = W;
-    t.height = H;
-    t.format = (uint8_t)fmt;
+    zt_target_packed(&t, frame_color, frame_depth, W, H, fmt);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, bgz));
     /* Half the frames draw through the optional vertex cache: the band
@@ -213,17 +205,9 @@ static void render_frame_mode(zl_format fmt, zl_rgb bg, uint16_t bgz)
 
 static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
 {
-    memset(c, 0, sizeof *c);
-    c->width = W;
-    c->height = H;
-    c->band_rows = band;
-    c->format = (uint8_t)fmt;
-    c->color_buffers = 1;
+    zt_frame_config_of(c, W, H, band, fmt);
+    zt_frame_capacity(c, NMESH, NV * NMESH, NT * NMESH, NT * NMESH * 7);
     c->gouraud = 1;
-    c->max_meshes = NMESH;
-    c->max_vertices = NV * NMESH;
-    c->max_triangles = NT * NMESH;
-    c->max_active = NT * NMESH * 7;
     c->styled = (uint8_t)styled;
     c->textured = (uint8_t)styled;
     if (styled) /* outlines: a primitive per edge */

@@ -21,6 +21,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
 #include "zt_ref.h"
 
 #define W 1040
@@ -87,14 +88,7 @@ static void random_triangle(int n)
 
 static void make_target(zl_target *tg, zl_format fmt)
 {
-    memset(tg, 0, sizeof *tg);
-    tg->color = color_buf;
-    tg->color_stride = (int32_t)(W * zl_format_bytes(fmt));
-    tg->depth = depth_buf;
-    tg->depth_stride = W * 2;
-    tg->width = W;
-    tg->height = H;
-    tg->format = (uint8_t)fmt;
+    zt_target_packed(tg, color_buf, depth_buf, W, H, fmt);
 }
 
 static void mesh_of(zl_mesh *m)
@@ -107,18 +101,8 @@ static void mesh_of(zl_mesh *m)
     m->triangle_count = 1;
 }
 
-static int copy_band(void *user, const zl_band *b)
-{
-    size_t bpp = zl_format_bytes((zl_format)b->format);
-    uint16_t r;
-    (void)user;
-    for (r = 0; r < b->rows; r++) {
-        size_t y = (size_t)b->first_row + r;
-        memcpy(color_buf + y * W * bpp, (const uint8_t *)b->color + (size_t)r * (size_t)b->color_stride, W * bpp);
-        memcpy(depth_buf + y * W, (const uint8_t *)b->depth + (size_t)r * (size_t)b->depth_stride, W * 2);
-    }
-    return 0;
-}
+/* Scanline output lands where frame mode draws, for the same checks. */
+static zt_frame_copy to_buffers = {color_buf, depth_buf};
 
 static void render(zl_format fmt, unsigned path, const zl_state *st)
 {
@@ -127,21 +111,13 @@ static void render(zl_format fmt, unsigned path, const zl_state *st)
     if (path == PATH_SCANLINE) {
         zl_frame_config cfg;
         zl_frame f;
-        memset(&cfg, 0, sizeof cfg);
-        cfg.width = W;
-        cfg.height = H;
-        cfg.band_rows = 1;
-        cfg.format = (uint8_t)fmt;
-        cfg.color_buffers = 1;
+        zt_frame_config_of(&cfg, W, H, 1, fmt);
+        zt_frame_capacity(&cfg, 1, 3, 1, 8);
         cfg.gouraud = 1;
-        cfg.max_meshes = 1;
-        cfg.max_vertices = 3;
-        cfg.max_triangles = 1;
-        cfg.max_active = 8;
         TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, st));
-        TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, copy_band, NULL));
+        TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, zt_band_copy_fn, &to_buffers));
     } else {
         zl_target tg;
         zl_context ctx;
@@ -187,28 +163,6 @@ static int64_t clamp_to(int64_t v, int64_t hi)
     return v < 0 ? 0 : v > hi ? hi : v;
 }
 
-/* The stored channels of pixel p: the format's values and bits. */
-static void read_pixel(zl_format fmt, unsigned p, unsigned *ch, unsigned *bits)
-{
-    uint16_t v;
-    if (fmt == ZL_FORMAT_RGB888) {
-        ch[0] = color_buf[p * 3];
-        ch[1] = color_buf[p * 3 + 1];
-        ch[2] = color_buf[p * 3 + 2];
-        bits[0] = bits[1] = bits[2] = 8;
-        return;
-    }
-    if (fmt == ZL_FORMAT_RGB565)
-        memcpy(&v, color_buf + p * 2, 2);
-    else
-        v = (uint16_t)((color_buf[p * 2] << 8) | color_buf[p * 2 + 1]);
-    ch[0] = v >> 11;
-    ch[1] = (v >> 5) & 63u;
-    ch[2] = v & 31u;
-    bits[0] = 5;
-    bits[1] = 6;
-    bits[2] = 5;
-}
 
 /* Every pixel of the target against the bound: covered pixels by the exact
  * mix, the others untouched (black). 1 on the first failure. */
@@ -222,7 +176,7 @@ static int check(zl_format fmt, const char *what)
             unsigned p = (unsigned)(j * W + i), ch[3], bits[3], c;
             int covered = zt_tri_covers(&tri, i, j);
             covered_checked += covered;
-            read_pixel(fmt, p, ch, bits);
+            zt_read_channels(color_buf, fmt, p, ch, bits);
             for (c = 0; c < 3; c++) {
                 int64_t num, area, lo, hi;
                 if (!covered) {

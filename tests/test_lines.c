@@ -11,6 +11,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -23,16 +24,9 @@ static zl_context ctx;
 static uint8_t want[W * H], got[W * H];
 
 static uint32_t rng = 0x2545F491u;
-static uint32_t next_rand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
-}
 static int32_t rand_range(int32_t lo, int32_t hi)
 {
-    return lo + (int32_t)(next_rand() % (uint32_t)(hi - lo + 1));
+    return zt_rand_range(&rng, lo, hi);
 }
 
 static void make_target(void)

@@ -32,6 +32,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
 #include "zt_ref.h"
 
 #define W 32
@@ -264,14 +265,7 @@ static const zl_rgb clear_rgb = {0x5A, 0xA5, 0x3C};
 
 static void make_target(zl_target *tg, zl_format fmt)
 {
-    memset(tg, 0, sizeof *tg);
-    tg->color = color_buf;
-    tg->color_stride = (int32_t)(W * zl_format_bytes(fmt));
-    tg->depth = depth_buf;
-    tg->depth_stride = W * 2;
-    tg->width = W;
-    tg->height = H;
-    tg->format = (uint8_t)fmt;
+    zt_target_packed(tg, color_buf, depth_buf, W, H, fmt);
 }
 
 static void meshes(zl_mesh *m, zl_lines *l, int gouraud)
@@ -314,18 +308,8 @@ static void render_direct(zl_format fmt, const zl_state *st, int lines, int cach
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
 }
 
-static int copy_band(void *user, const zl_band *b)
-{
-    size_t bpp = zl_format_bytes((zl_format)b->format);
-    uint16_t r;
-    (void)user;
-    for (r = 0; r < b->rows; r++) {
-        size_t y = (size_t)b->first_row + r;
-        memcpy(color_buf + y * W * bpp, (const uint8_t *)b->color + (size_t)r * (size_t)b->color_stride, W * bpp);
-        memcpy(depth_buf + y * W, (const uint8_t *)b->depth + (size_t)r * (size_t)b->depth_stride, W * 2);
-    }
-    return 0;
-}
+/* Scanline output lands where frame mode draws, for the same checks. */
+static zt_frame_copy to_buffers = {color_buf, depth_buf};
 
 static void render_scanline(zl_format fmt, const zl_state *st, int lines)
 {
@@ -334,17 +318,9 @@ static void render_scanline(zl_format fmt, const zl_state *st, int lines)
     zl_mesh m;
     zl_lines l;
     zl_style style;
-    memset(&cfg, 0, sizeof cfg);
-    cfg.width = W;
-    cfg.height = H;
-    cfg.band_rows = 1;
-    cfg.format = (uint8_t)fmt;
-    cfg.color_buffers = 1;
+    zt_frame_config_of(&cfg, W, H, 1, fmt);
+    zt_frame_capacity(&cfg, 1, NTRI * 3, NTRI, NTRI * 8);
     cfg.gouraud = 1;
-    cfg.max_meshes = 1;
-    cfg.max_vertices = NTRI * 3;
-    cfg.max_triangles = NTRI;
-    cfg.max_active = NTRI * 8;
     cfg.styled = (uint8_t)lines;
     TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, clear_rgb, CLEAR_DEPTH));
@@ -354,34 +330,11 @@ static void render_scanline(zl_format fmt, const zl_state *st, int lines)
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_lines(&f, &l, NULL, st, &style));
     else
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, st));
-    TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, copy_band, NULL));
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, zt_band_copy_fn, &to_buffers));
 }
 
 /* --- comparison -------------------------------------------------------- */
 
-/* The pixel's channels at the format's precision: r, g, b and their bits. */
-static void read_pixel(zl_format fmt, unsigned p, unsigned *ch, unsigned *bits)
-{
-    if (fmt == ZL_FORMAT_RGB888) {
-        ch[0] = color_buf[p * 3];
-        ch[1] = color_buf[p * 3 + 1];
-        ch[2] = color_buf[p * 3 + 2];
-        bits[0] = bits[1] = bits[2] = 8;
-        return;
-    } else {
-        uint16_t v;
-        if (fmt == ZL_FORMAT_RGB565)
-            memcpy(&v, color_buf + p * 2, 2);
-        else
-            v = (uint16_t)((color_buf[p * 2] << 8) | color_buf[p * 2 + 1]);
-        ch[0] = v >> 11;
-        ch[1] = (v >> 5) & 63u;
-        ch[2] = v & 31u;
-        bits[0] = 5;
-        bits[1] = 6;
-        bits[2] = 5;
-    }
-}
 
 static char msg[400];
 
@@ -395,7 +348,7 @@ static int check_against_model(zl_format fmt, const char *what)
         const model_px *m = &model[p];
         unsigned ch[3], bits[3];
         uint16_t d = depth_buf[p];
-        read_pixel(fmt, p, ch, bits);
+        zt_read_channels(color_buf, fmt, p, ch, bits);
         for (c = 0; c < 3; c++) {
             unsigned lo = (unsigned)m->lo[c] >> (8 - bits[c]), hi = (unsigned)m->hi[c] >> (8 - bits[c]);
             if (ch[c] < lo || ch[c] > hi) {

@@ -13,6 +13,8 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -20,10 +22,7 @@ void tearDown(void) {}
 static uint32_t rng = 2024u;
 static uint32_t next_rand(void)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
+    return zt_rand(&rng);
 }
 static int32_t rand_range(int32_t lo, int32_t hi) /* inclusive */
 {
@@ -519,14 +518,7 @@ static void test_lit_sphere_identical_in_frame_and_scanline_mode(void)
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_light_vertices(&lt, &mv, &mesh, sp_nrm, sp_lit));
     mesh.vertex_colors = sp_lit;
 
-    memset(&tg, 0, sizeof tg);
-    tg.color = fb_color;
-    tg.color_stride = W * 2;
-    tg.depth = fb_depth;
-    tg.depth_stride = W * 2;
-    tg.width = W;
-    tg.height = H;
-    tg.format = ZL_FORMAT_RGB565;
+    zt_target_packed(&tg, fb_color, fb_depth, W, H, ZL_FORMAT_RGB565);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
     ctx.state.shading = ZL_SHADE_GOURAUD;
     ctx.state.cull = ZL_CULL_BACK;
@@ -537,17 +529,9 @@ static void test_lit_sphere_identical_in_frame_and_scanline_mode(void)
         zl_frame_config cfg;
         zl_frame f;
         cmp_ctx cc = {0};
-        memset(&cfg, 0, sizeof cfg);
-        cfg.width = W;
-        cfg.height = H;
-        cfg.band_rows = bands[b];
-        cfg.format = ZL_FORMAT_RGB565;
-        cfg.color_buffers = 1;
+        zt_frame_config_of(&cfg, W, H, bands[b], ZL_FORMAT_RGB565);
+        zt_frame_capacity(&cfg, 1, SV, ST, ST);
         cfg.gouraud = 1;
-        cfg.max_meshes = 1;
-        cfg.max_vertices = SV;
-        cfg.max_triangles = ST;
-        cfg.max_active = ST;
         TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &mesh, &mvp, &st));

@@ -19,6 +19,7 @@
 #include "zl_spi_panel.h"
 #include "zline/zline.h"
 #include "zt_panel_model.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -86,10 +87,7 @@ typedef struct {
 static uint32_t rng;
 static int32_t rand_range(int32_t lo, int32_t hi)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return lo + (int32_t)(rng % (uint32_t)(hi - lo + 1));
+    return zt_rand_range(&rng, lo, hi);
 }
 
 /* Triangles over a w x h area and a little beyond (clipped edges), every

@@ -25,6 +25,8 @@
 #include "unity.h"
 #include "zline/zl_visibility.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -37,16 +39,9 @@ enum { W = 48, H = 40, NV = 24, NT = 16, NMESH = 3 };
 #define TIE 257
 
 static uint32_t rng = 0x9E3779B9u;
-static uint32_t next_rand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
-}
 static int32_t rand_range(int32_t lo, int32_t hi) /* inclusive */
 {
-    return lo + (int32_t)(next_rand() % (uint32_t)(hi - lo + 1));
+    return zt_rand_range(&rng, lo, hi);
 }
 
 typedef struct {
@@ -115,14 +110,7 @@ static void render_zbuffer(void)
     zl_target t;
     zl_context ctx;
     int i;
-    memset(&t, 0, sizeof t);
-    t.color = zb_color;
-    t.color_stride = W * 3;
-    t.depth = zb_depth;
-    t.depth_stride = W * 2;
-    t.width = W;
-    t.height = H;
-    t.format = ZL_FORMAT_RGB888;
+    zt_target_packed(&t, zb_color, zb_depth, W, H, ZL_FORMAT_RGB888);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
     for (i = 0; i < scene_meshes; i++) {

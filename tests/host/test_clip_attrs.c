@@ -34,7 +34,9 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
 #include "zt_linear.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -45,17 +47,9 @@ void tearDown(void) {}
 
 static uint64_t rng = 0xC0FFEE1234567891ull;
 
-static uint32_t rnd32(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (uint32_t)(rng >> 32);
-}
-
 static int32_t rnd_range(int32_t lo, int32_t hi)
 {
-    return lo + (int32_t)(rnd32() % (uint32_t)(hi - lo + 1));
+    return zt_rand64_range(&rng, lo, hi);
 }
 
 static uint8_t color_buf[W * H * 3], color_ref[W * H * 3];
@@ -177,14 +171,10 @@ static void setup_style(int kind, const zl_fixed *uv, zl_state *st, zl_style *st
 
 static void target_of(zl_target *tg, int rgb565)
 {
-    memset(tg, 0, sizeof *tg);
-    tg->color = rgb565 ? (void *)c565 : (void *)color_buf;
-    tg->color_stride = W * (rgb565 ? 2 : 3);
-    tg->depth = depth_buf;
-    tg->depth_stride = W * 2;
-    tg->width = W;
-    tg->height = H;
-    tg->format = rgb565 ? ZL_FORMAT_RGB565 : ZL_FORMAT_RGB888;
+    if (rgb565)
+        zt_target_packed(tg, c565, depth_buf, W, H, ZL_FORMAT_RGB565);
+    else
+        zt_target_packed(tg, color_buf, depth_buf, W, H, ZL_FORMAT_RGB888);
 }
 
 /* Frame mode into color_buf, then scanline and bands of 5 through zl_frame:
@@ -204,33 +194,18 @@ static void draw_all(const zl_mesh *mesh, const zl_mat4 *mvp, const zl_state *st
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, black, 0xFFFF));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, mesh, mvp));
     for (b = 0; b < 2; b++) {
+        static const zt_frame_copy to_ref = {color_ref, NULL};
         zl_frame_config cfg;
         zl_frame fr;
-        zl_band band;
-        zl_status rc;
-        memset(&cfg, 0, sizeof cfg);
-        cfg.width = W;
-        cfg.height = H;
-        cfg.band_rows = bands[b];
-        cfg.format = ZL_FORMAT_RGB888;
-        cfg.color_buffers = 1;
+        zt_frame_config_of(&cfg, W, H, bands[b], ZL_FORMAT_RGB888);
+        zt_frame_capacity(&cfg, 1, 3, 1, 8);
         cfg.gouraud = 1;
         cfg.styled = 1;
         cfg.textured = 1;
-        cfg.max_meshes = 1;
-        cfg.max_vertices = 3;
-        cfg.max_triangles = 1;
-        cfg.max_active = 8;
         TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&fr, &cfg, work, sizeof work, black, 0xFFFF));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&fr, mesh, mvp, st, sty));
-        while ((rc = zl_frame_next_band(&fr, &band)) == ZL_OK) {
-            unsigned r;
-            for (r = 0; r < band.rows; r++)
-                memcpy(&color_ref[(band.first_row + r) * W * 3],
-                       (const uint8_t *)band.color + r * (unsigned)band.color_stride, W * 3);
-        }
-        TEST_ASSERT_EQUAL_INT(ZL_DONE, rc);
+        zt_frame_drain(&fr, &to_ref);
         TEST_ASSERT_EQUAL_MEMORY(color_buf, color_ref, sizeof color_buf);
     }
     if (sty->texture != NULL) {

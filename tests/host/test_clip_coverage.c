@@ -35,7 +35,9 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_frame.h"
 #include "zt_linear.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -52,15 +54,12 @@ static uint64_t rng;
 
 static uint32_t rnd32(void)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (uint32_t)(rng >> 32);
+    return zt_rand64(&rng);
 }
 
 static int32_t rnd_range(int32_t lo, int32_t hi)
 {
-    return lo + (int32_t)(rnd32() % (uint32_t)(hi - lo + 1));
+    return zt_rand64_range(&rng, lo, hi);
 }
 
 /* ------------------------------------------------------------ meshes */
@@ -328,12 +327,7 @@ static int ref_pixel(const mesh_buf *m, const proj_ref *p, int i, int j, int *fr
 
 static void target_of(zl_target *tg)
 {
-    memset(tg, 0, sizeof *tg);
-    tg->color = color_buf;
-    tg->color_stride = W * 3;
-    tg->width = W;
-    tg->height = H;
-    tg->format = ZL_FORMAT_RGB888;
+    zt_target_packed(tg, color_buf, NULL, W, H, ZL_FORMAT_RGB888);
 }
 
 /* Front (red) and back (green) fragment counts of a mesh. */
@@ -579,19 +573,11 @@ static uint64_t triangle_digest(uint64_t h, const mesh_buf *m, unsigned t, const
         zl_frame fr;
         zl_band band;
         zl_status rc;
-        memset(&cfg, 0, sizeof cfg);
-        cfg.width = W;
-        cfg.height = H;
-        cfg.band_rows = mode == 1 ? 1 : 5;
-        cfg.format = ZL_FORMAT_RGB888;
-        cfg.color_buffers = 1;
+        zt_frame_config_of(&cfg, W, H, mode == 1 ? 1 : 5, ZL_FORMAT_RGB888);
+        zt_frame_capacity(&cfg, 1, m->nv, 1, 16);
         cfg.gouraud = 1;
         cfg.styled = 1;
         cfg.textured = 1;
-        cfg.max_meshes = 1;
-        cfg.max_vertices = m->nv;
-        cfg.max_triangles = 1;
-        cfg.max_active = 16;
         TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&fr, &cfg, work, sizeof work, black, 0xFFFF));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&fr, &mesh, mvp, &st, &sty));

@@ -23,6 +23,7 @@
 #include "../../core/src/1_base/zl_internal.h"
 #include "unity.h"
 #include "zl_obj.h"
+#include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -31,16 +32,13 @@ static uint64_t rng = 0x2545F4914F6CDD1Dull;
 
 static uint32_t rnd32(void)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (uint32_t)(rng >> 32);
+    return zt_rand64(&rng);
 }
 
 /* Uniform in [lo, hi] (raw Q16.16). */
 static int32_t rnd_range(int32_t lo, int32_t hi)
 {
-    return lo + (int32_t)(rnd32() % (uint32_t)(hi - lo + 1));
+    return zt_rand64_range(&rng, lo, hi);
 }
 
 /* Exact eye distance of p, in 2^-32 units: minus the view's third row. */

@@ -279,6 +279,22 @@ int32_t zt_rand_range(uint32_t *state, int32_t lo, int32_t hi)
     return (int32_t)((int64_t)lo + (int64_t)(zt_rand(state) % span));
 }
 
+uint32_t zt_rand64(uint64_t *state)
+{
+    uint64_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    *state = x;
+    return (uint32_t)(x >> 32);
+}
+
+int32_t zt_rand64_range(uint64_t *state, int32_t lo, int32_t hi)
+{
+    uint32_t span = (uint32_t)((int64_t)hi - lo + 1);
+    return (int32_t)((int64_t)lo + (int64_t)(zt_rand64(state) % span));
+}
+
 uint64_t zt_isqrt(uint64_t v)
 {
     uint64_t r = 0, bit = (uint64_t)1 << 62;

@@ -94,6 +94,12 @@ int zt_poly_covers(const int64_t *x2, const int64_t *y2, unsigned n, int32_t i, 
 uint32_t zt_rand(uint32_t *state);
 /* Uniform-ish integer in lo..hi inclusive (hi - lo < 2^31). */
 int32_t zt_rand_range(uint32_t *state, int32_t lo, int32_t hi);
+/* xorshift64 (13, 7, 17), the high 32 bits of the new state; the state must
+ * start non-zero. A second generator, not a replacement: the tests seeded
+ * with it keep the scenes they were written with. */
+uint32_t zt_rand64(uint64_t *state);
+/* lo + zt_rand64() % (hi - lo + 1), lo..hi inclusive (hi - lo < 2^31). */
+int32_t zt_rand64_range(uint64_t *state, int32_t lo, int32_t hi);
 
 /* floor(sqrt(v)). */
 uint64_t zt_isqrt(uint64_t v);
