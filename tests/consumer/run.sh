@@ -22,6 +22,9 @@
 #                    arm-none-eabi-gcc for a hard-float Cortex-M4F
 #   abi_mismatch     a soft-float core into a hard-float firmware must fail to
 #                    link (the per-ABI link tests can fail)
+#   presets          CMakePresets.json: every preset README names is a
+#                    configure, build and test preset; host and cortex-m4f
+#                    configure
 #
 #   tests/consumer/run.sh [work-dir]     (default build/consumer; JOBS=2)
 # Last line: "consumer: N passed, M failed, K skipped"; exit status 1 if any
@@ -226,6 +229,24 @@ abi_mismatch() {
     echo "refused as expected: $(grep -m1 'VFP register arguments' link.log)"
 }
 
+# The presets of README: every configure, build and test preset parses and
+# names a configure preset that exists (cmake --list-presets=all fails
+# otherwise), each preset README names is listed, and two of them configure
+# (host, and the hard-float cortex-m4f) into a scratch folder (-B overrides
+# the preset's build/<name>). CI's own cross runs use the same toolchain flags.
+presets() {
+    cd "$root"
+    cmake --list-presets=all >"$out/presets.list" || fail "cmake --list-presets=all"
+    for p in host host-sanitize cortex-m0 cortex-m0plus cortex-m3 cortex-m4 cortex-m4f cortex-m4f-softfp \
+        cortex-m7 cortex-m33 cortex-m55 rv32imac rv32imc; do
+        [ "$(grep -c "\"$p\"" "$out/presets.list")" -eq 3 ] || fail "preset $p is not a configure, build and test preset"
+    done
+    for p in host cortex-m4f; do
+        cmake --preset "$p" -B "$out/preset-$p" >"$out/preset-$p.log" 2>&1 || { cat "$out/preset-$p.log"; fail "cmake --preset $p"; }
+    done
+    echo "presets: every preset listed three times (configure, build, test); host and cortex-m4f configure"
+}
+
 check headers_c99_gcc headers gcc "$strict_c" c
 check headers_c99_clang headers clang "$strict_c" c
 check headers_cxx11_gxx headers g++ "$strict_cxx" cpp
@@ -246,6 +267,7 @@ check pkg_config pkg_config
 check vendor_host vendor_host
 check vendor_cortex-m4f vendor_m4f
 check abi_mismatch abi_mismatch
+check presets presets
 
 echo "consumer: $passed passed, $failed failed, $skipped skipped"
 [ "$failed" -eq 0 ]
