@@ -21,11 +21,11 @@ echo "### RAM, benchmark scene (bunny, 320x240, RGB565)"
 echo
 "$bench/zline-bench-modes" "$model"
 echo
-echo "### Instructions per frame on the host (x86-64, callgrind, build type of $build)"
+echo "### Instructions per frame on the host (x86-64, callgrind)"
 echo
 echo "| mode | instructions per frame |"
 echo "|---|---:|"
-echo "| frame (zl_draw_mesh without the vertex cache, clear included) | $(count render_frame_once "$bench/zline-bench-modes" "$model" --only frame) |"
+echo "| frame (zl_draw_mesh, the default call: no caller vertex cache; clear included) | $(count render_frame_once "$bench/zline-bench-modes" "$model" --only frame) |"
 for m in scanline band=8 band=60 band=240; do
     echo "| $m | $(count render_once "$bench/zline-bench-modes" "$model" --only $m) |"
 done
