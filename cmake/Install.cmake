@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Install rules: headers, libzline.a, the CMake package (zlineConfig.cmake,
 # zlineConfigVersion.cmake, the exported targets) and pkg-config's zline.pc.
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The project's warning flags, in one place. They are only ever used as
 # PRIVATE compile options of zline's own targets: nothing here reaches a
 # consumer's compiler. -Werror is on in zline's own builds (top level, CI);

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Every test of zline, as CI runs it:
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer, built

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Blending and texel formats (zline.h: TEXEL FORMATS AND SIZES, BLENDING)
  * against an exact per-pixel reference written here:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Near and far clipping of untextured triangles against exact geometry.
  *

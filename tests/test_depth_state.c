@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Render state, depth and argument checking against zline.h:
  *   - the eight depth functions (incoming depth equal to, one below and one

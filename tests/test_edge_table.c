@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The classic worked example of edge-table depth interpolation, checked
  * against the project's own edge steppers and depth plane (white-box: it

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fast exact division (zl_udiv64_32, and zl_div_inv for a divisor fixed per
  * triangle) against the plain 64-bit C division, on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fixed-point arithmetic: rounding, range errors, square roots, sine table. */
 #include "unity.h"
 #include "zline/zline.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zl_frame_bytes against a size written out here from docs/DESIGN.md's
  * table of the work buffer, not from the library's layout function:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Scanline and band modes against frame mode: byte-identical colour and
  * depth for random scenes (meshes, transforms through the near plane,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The Gouraud colour bound (zline.h, Gouraud colour) on long spans, against
  * the exact rational mix written here.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The LIMITS block of zline.h, tested at each edge: inputs at a limit render
  * by the raster contract, inputs one step beyond return the documented error

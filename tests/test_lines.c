@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Lines and points against the LINE RULE of zline.h: hand-drawn masks for
  * the tie cases, a reference written from the rule (exact integers, per

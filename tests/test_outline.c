@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Outlines: the edge list (adjacency) of small meshes by hand, and the
  * silhouette and crease edges of a cube seen from many places against a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Polygon modes (point, line, fill per front and back face, as
  * glPolygonMode) and polygon offset (factor * max slope + units * r), in

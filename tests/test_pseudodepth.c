@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Pseudodepth: near -> 0, far -> 65535, monotonic, A + B/z, linear in
  * screen space through the whole pipeline, and the precision function.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Exact coverage of single triangles against the RASTER CONTRACT (zline.h):
  * snapping to 1/16 px with ties towards +infinity, pixel centres, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Smooth (per-vertex) lighting, zl_light_vertices, against an independent
  * double-precision model of the SMOOTH LIGHTING equation of zline.h: the

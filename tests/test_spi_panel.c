@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The ST7789 / ILI9341 driver (port/display/zl_spi_panel.c) against a model
  * of the controllers written from their data sheets (support/zt_panel_model.c):

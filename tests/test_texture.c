@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Texture mapping: a checkerboard floor receding towards the horizon,
  * against a reference computed here (in double) from the camera: for every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Visibility without a depth buffer (zl_visibility.h, issue #6).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Watertightness (RASTER CONTRACT, zline.h: "two triangles sharing an edge
  * never both cover a pixel, and a mesh without holes leaves none").

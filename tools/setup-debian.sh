@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Install what zline's build, tests and tools need on Debian (12 or later).
 # Everything comes from Debian's own archive. clang and libclang-rt-dev (libFuzzer,
 # sanitizer runtimes) build the fuzz targets; clang-tidy and cppcheck are the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The self-test cases shared by the bare-metal ports (selftest_common.h). */
 #include "selftest_common.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The self-test cases every bare-metal port runs under QEMU (port/cortex-m,
  * port/riscv): what the tests and benchmarks rely on. The C library pieces

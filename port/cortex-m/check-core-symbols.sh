@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # core_no_float_symbols: compile every core/src/*/*.c for a Cortex-M0 (no FPU,
 # soft float: any float or double arithmetic becomes a libgcc call) and fail
 # if an object references

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # How zline's own Cortex-M build runs its tests: QEMU, chosen by ZLINE_CPU,
 # kept apart from the compiler flags (toolchain-arm-none-eabi.cmake) so a
 # firmware project using the toolchain file gets none of it. Included by

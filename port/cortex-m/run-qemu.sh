@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Run a Cortex-M ELF built with this port under QEMU: semihosting output on
 # stdout, and this script's exit status is the program's (main's return
 # value, 0 = all tests passed; 240+n = fault exception n, see startup.c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ARM semihosting calls; see semihosting.h. */
 #include "semihosting.h"
 

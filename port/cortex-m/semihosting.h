@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ARM semihosting for the Cortex-M port: the debugger (here QEMU with
  * -semihosting-config enable=on) services a "bkpt 0xab" with r0 = operation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stack high-water mark by painting; see zl_port.h. */
 #include <stdint.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Start-up and fault handling for the Cortex-M port (mps2 boards under QEMU,
  * and any Cortex-M with RAM at the linker script's addresses).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * newlib system calls over semihosting: stdout and stderr go to the host
  * console, fopen/fread/fwrite/fseek reach host files (paths relative to

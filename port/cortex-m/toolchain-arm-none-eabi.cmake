@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # CMake toolchain file: compile zline (or a firmware using it) for a real
 # Cortex-M part with arm-none-eabi-gcc. Compiler flags only: how the tests
 # run under QEMU is port/cortex-m/qemu.cmake, which zline's own port build

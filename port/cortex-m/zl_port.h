@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The Cortex-M test/benchmark port: what programs built with
  * zline_target_executable() can call besides the C library. printf, puts and

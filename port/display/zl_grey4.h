@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * RGB565 -> 4-bit grey: the one conversion rule of zline's greyscale panels
  * (the SSD0323 OLED of port/lm3s6965). The firmware and the host reference

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ST7789 / ILI9341 over SPI: see zl_spi_panel.h. */
 #include "zl_spi_panel.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * SPI RGB565 panels: ST7789 (e.g. 240x240 and 240x320 modules) and ILI9341
  * (320x240), the displays most zline users have. Portable C99: the board

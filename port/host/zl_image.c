@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Images as textures for the host port (see zl_image.h). */
 #include "zl_image.h"
 

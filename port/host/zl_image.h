@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Images as textures, for the host port: the one conversion that both
  * zline-img2c (const arrays for firmware) and zline-render --texture use, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Wavefront OBJ loader (host port). See zl_obj.h for what is accepted.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Wavefront OBJ loader for the host port: reads a text OBJ file into heap
  * arrays that a core zl_mesh can point at.

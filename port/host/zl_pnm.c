@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Netpbm P6/P5 writing and reading (host port). See zl_pnm.h. */
 #if !defined(_WIN32) && !defined(_POSIX_C_SOURCE)
 #define _POSIX_C_SOURCE 200809L /* open(O_EXCL), fdopen, getpid */

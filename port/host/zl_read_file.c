@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Whole-file reading for the host loaders (zl_read_file.h). */
 #include "zl_read_file.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Reading a whole file into memory, shared by the host loaders (zl_obj.c,
  * zl_pnm.c). Private to the host port: not installed.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-render: render an OBJ model to a PPM image with the zline core.
  *

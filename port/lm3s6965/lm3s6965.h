@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The LM3S6965 registers this port uses (Stellaris LM3S6965 Microcontroller
  * Data Sheet, Texas Instruments): system control, GPIO ports A, C, D, the

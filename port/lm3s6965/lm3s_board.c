@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Board support for the LM3S6965: see lm3s_board.h. */
 #include "lm3s_board.h"
 

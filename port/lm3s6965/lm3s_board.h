@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Board support for the Stellaris LM3S6965 evaluation board (QEMU
  * lm3s6965evb): system clock, an instruction counter on SysTick for QEMU

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline on a real display: the bunny turning on the LM3S6965 evaluation
  * board's 128x64 OLED (SSD0323 over SPI), rendered in scanline mode with

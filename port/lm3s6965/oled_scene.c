@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The OLED demo's animation: see oled_scene.h. */
 #include "oled_scene.h"
 

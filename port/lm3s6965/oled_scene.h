@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The OLED demo's animation: the benchmark bunny (bunny.obj, normalised to a
  * largest extent of 2) turning about its vertical axis, OLED_SCENE_FRAMES

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The OLED firmware on QEMU's emulated display, frame by frame, against the host.
 
     oled_test.py --qemu qemu-system-arm --elf oled_demo.elf \

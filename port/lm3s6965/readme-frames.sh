@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The README's OLED frames and figures, from QEMU's emulated display:
 #   sh port/lm3s6965/readme-frames.sh [build-dir]     (default build/lm3s6965)
 # Builds the Cortex-M3 firmware and the host reference, runs the display test

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """README's OLED figures against the firmware's own report.
 
     python3 port/lm3s6965/readme_figures.py FIRMWARE_LOG README.md

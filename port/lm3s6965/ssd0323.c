@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * SSD0323 driver on the LM3S6965's SSI0: see ssd0323.h. Command numbers and
  * the initialisation values are from the SSD0323 data sheet (Solomon Systech)

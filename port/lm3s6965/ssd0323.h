@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * SSD0323 OLED driver for the LM3S6965 evaluation board: the OSRAM Pictiva
  * 128x64 panel, 4-bit grey, on SSI0.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Start-up for the LM3S6965 (lm3s6965.ld): the vector table, the reset
  * handler and fault handlers that stop at once.

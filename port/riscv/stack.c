@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The program stack: a guard at its bottom, and the high-water mark by
  * painting; see zl_port.h. */
 #include <stdint.h>

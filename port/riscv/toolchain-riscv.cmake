@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # CMake toolchain file: cross-compile zline for bare-metal 32-bit RISC-V with
 # Debian's riscv64-unknown-elf-gcc and picolibc, and run the tests under
 # qemu-system-riscv32 (machine virt).

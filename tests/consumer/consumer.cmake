@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Shared by the consumer projects: the consumer program (app/consumer.c)
 # with a firmware developer's own strict flags, and, in a Cortex-M cross
 # build, the start-up code and linker script it needs to run under QEMU

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Consumer tests: zline used as a firmware project would use it, each case a
 # tiny project outside the source tree that renders a small scene through
 # zline and checks the pixels against its own reference (app/consumer.c).

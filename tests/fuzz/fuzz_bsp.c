@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fuzz target: zl_bsp_draw, the reader of BSP trees (zl_visibility.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fuzz target: frame mode (zl_init, zl_clear, zl_draw_mesh, zl_draw_lines)
  * fed arbitrary targets, meshes, lines, matrices, render states and styles

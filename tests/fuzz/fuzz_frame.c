@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fuzz target: scanline and band mode (zl_frame_*) with arbitrary
  * configurations, work-buffer sizes and alignments, and scenes.

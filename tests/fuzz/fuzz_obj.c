@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fuzz target: the OBJ loader (port/host zl_obj_load_mem) on arbitrary
  * bytes, then the loaded mesh rendered by the core.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fuzz target: the visibility methods without a depth buffer
  * (zl_visibility.h: AET, ray caster, painter's) with arbitrary

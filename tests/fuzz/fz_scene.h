@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fuzzed scenes for fuzz_draw and fuzz_frame: a mesh, a render state and a
  * matrix read from the fuzzer's bytes, with the validity zline.h promises

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Build the libFuzzer targets (clang, ASan + UBSan) and fuzz each for a
 # bounded time; fail on any finding.
 #   tests/fuzz/run.sh [BUILD_DIR]          (default build/fuzz)

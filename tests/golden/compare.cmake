@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Render one golden scene with zline-render and compare it byte for byte with
 # the committed image. -DRENDER -DSRC -DOUT -DNAME
 file(STRINGS ${SRC}/tests/golden/golden.txt lines REGEX "^${NAME}\\|")

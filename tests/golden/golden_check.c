@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * golden_check: checks an image written by zline-render against the test
  * reference (tests/support/zt_ref.h), not against zline's rasteriser.

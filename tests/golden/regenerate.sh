@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Rewrite the golden images after an intended change of the output, then look
 # at every one of them (tests/golden/*.png are made for that) before committing.
 # Each image is checked by the test reference (golden_check) first; CTest runs

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs zline-render and checks what it did; used by the CTest tests in
 # tests/host/CMakeLists.txt. Variables (-D):
 #   RENDER  the zline-render executable

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # zline-render's output paths (issue 16): outputs are compared with the model
 # and with each other by device and inode, not by spelling, and an existing
 # output that is not a regular file (FIFO, device) is refused, never replaced.

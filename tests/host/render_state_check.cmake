@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs zline-render on a small scene and checks single pixels of the image and
 # of the 16-bit depth buffer against values worked out by hand (the render
 # state tests of issue #14, tests/host/CMakeLists.txt). Variables (-D):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Bad input end to end, and the LIMITS that need more memory than the
  * portable suite may use (host only):

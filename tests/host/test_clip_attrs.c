@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Texture coordinates and perspective-correct Gouraud colour of clipped
  * triangles (zline.h, Clipping): at every pixel a clipped triangle covers

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Coverage of clipped triangles (zline.h, Clipping: "Clipping decides
  * coverage only"): it must not change when the attributes of clipped

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Depth and Gouraud colour of clipped triangles (zline.h, Clipping): at
  * every pixel a clipped triangle covers, the stored depth is within +-1 of

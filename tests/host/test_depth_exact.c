@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The exact depth mapping (zline.h, Pseudodepth; zl_state near_z, far_z):
  * every vertex's window depth against the exact pseudodepth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The host OBJ loader: formats, triangulation, every error with its line. */
 #if !defined(_WIN32) && !defined(_POSIX_C_SOURCE)
 #define _POSIX_C_SOURCE 200809L /* opendir: every model of the shared folder */

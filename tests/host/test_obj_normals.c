@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * OBJ normals: vn kept per vertex (Q14) when faces use them, carried through
  * the vt split, and computed normals (zl_obj_compute_normals) by area and

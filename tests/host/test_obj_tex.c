@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * OBJ texture coordinates (zl_obj_load_mem_tex): kept per vertex as
  * (s, t) = (u, 1 - v) in Q16.16, vertices split where a position is used

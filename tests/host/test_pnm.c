@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The host PNM writer and reader: round trips, the streaming writer's checks,
  * and that a failed write leaves no file. */
 #include <stdio.h>

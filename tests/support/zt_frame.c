@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Targets, frame configs and band copies for the tests (zt_frame.h). */
 #include "zt_frame.h"
 

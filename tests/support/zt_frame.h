@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Set-up the rendering tests repeat: a render target over packed buffers,
  * a zl_frame_config, and the band copy that turns scanline / band mode

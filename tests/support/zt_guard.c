@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guarded test buffers: see zt_guard.h. */
 #include "zt_guard.h"
 

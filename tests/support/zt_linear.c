@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Linear algebra for the tests' references (zt_linear.h). */
 #include "zt_linear.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Small linear algebra for the tests' floating-point references (the
  * clipped-triangle tests solve for homogeneous barycentrics). */
 #ifndef ZT_LINEAR_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ST7789 / ILI9341 controller model: see zt_panel_model.h. */
 #include "zt_panel_model.h"
 

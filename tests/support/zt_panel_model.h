@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A software model of an ST7789 / ILI9341 display controller on 4-wire SPI,
  * written from the two data sheets, independent of the driver it checks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference rasteriser for the RASTER CONTRACT: see zt_ref.h. */
 #include "zt_ref.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * An independent reference for the RASTER CONTRACT of zline.h, written from
  * the contract alone: per pixel, exact 64-bit integer arithmetic, no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Implementation of the Unity-compatible subset declared in unity.h. */
 #include "unity.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A small Unity-compatible test runner: exactly the subset of Unity's API
  * (ThrowTheSwitch.org, MIT) that zline's tests use, with Unity's output

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-bench-modes: RAM and output of the benchmark scene in frame mode,
  * band modes and scanline mode.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-bench-offrow: the per-row cost of scanline mode does not grow with
  * triangles that are not on the row.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The benchmark scene (see bench_scene.h). */
 #include "bench_scene.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The benchmark scene shared by zline's host benchmarks: bunny.obj at
  * 320x240, bounding box centred and scaled to a largest extent of 2.0,

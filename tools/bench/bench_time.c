@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-bench-time: wall-clock milliseconds per frame of the benchmark scene
  * (bench_scene.h: the bunny at 320x240, RGB565) on the host, in the three

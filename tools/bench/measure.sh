@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Host measurements quoted in README (scanline mode, issue #3): RAM per mode
 # from the library's size function, and instructions per frame counted by
 # callgrind (exact and repeatable for the same binary and inputs).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Offline BSP builder: see bsp_build.h. Host code: doubles for geometry,
  * Q16.16 integers for every vertex it stores. */
 #include "bsp_build.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Offline BSP tree builder (host only; used by the zline-bsp tool, the
  * visibility benchmark and the tree's own test).

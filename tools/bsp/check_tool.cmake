@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Run zline-bsp on MODEL and compile its output as C99 with the core's
 # include path: the generated arrays must be valid, warning-free C.
 execute_process(COMMAND ${TOOL} --normalize ${MODEL} ${OUT} test_tree RESULT_VARIABLE rc OUTPUT_VARIABLE out)

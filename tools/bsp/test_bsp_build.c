@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The BSP builder and the core's tree walk, on real meshes.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-bsp: build a BSP tree from an OBJ file offline and write it as const
  * C arrays for firmware (a `const zl_bsp NAME` to pass to zl_bsp_draw).

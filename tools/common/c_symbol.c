@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* C symbol names for the generators (c_symbol.h). */
 #include "c_symbol.h"
 

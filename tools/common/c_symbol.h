@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The C names the generators (zline-obj2c, zline-img2c) give what they
  * write: a prefix for the arrays (from --name, or from the input file's

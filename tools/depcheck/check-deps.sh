@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # core_dependencies: the pipeline folders of core/src depend one way.
 #
 #   tools/depcheck/check-deps.sh [SOURCE_DIR]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-depthcalc: how far apart two surfaces must be for a depth buffer to
  * tell them apart.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Turn a golden frame of port/cortex-m/bench (golden.c: RGB565 colour, then the
 16-bit depth buffer, little-endian, 320x240) into a PNG for the docs.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
 
     python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-img2c: turn an image into a C source of a const texture for
  * firmware, plus its header. The image is read and converted by the host

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # zline_img2c(NAME IMAGE TOOL [DEPENDS targets-or-files...] [OPTIONS zline-img2c options...])
 # Generate ${CMAKE_CURRENT_BINARY_DIR}/NAME_texture.c and NAME_texture.h from
 # IMAGE at build time with the host tool TOOL (a path or

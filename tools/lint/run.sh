@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Static analysis of core/ and port/host; CI fails on any finding.
 #   cppcheck     warning, style, performance, portability; suppressions in
 #                tools/lint/cppcheck-suppressions.txt, each explained there

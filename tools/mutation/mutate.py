@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Mutation testing of zline: does the test suite notice a broken rule?
 
 Each mutation (tools/mutation/mutations.py) names a source file by its

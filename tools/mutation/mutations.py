@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Rule-level mutations for tools/mutation/mutate.py.
 
 (id, file basename, exact text (must occur once), replacement, the rule broken)

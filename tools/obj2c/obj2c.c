@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-obj2c: turn a Wavefront OBJ into a C source of const arrays for
  * firmware, plus its header. The model is read by the host port's loader

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # zline_obj2c(NAME OBJ TOOL [DEPENDS targets-or-files...] [OPTIONS zline-obj2c options...])
 # Generate ${CMAKE_CURRENT_BINARY_DIR}/NAME_mesh.c and NAME_mesh.h from OBJ at
 # build time with the host tool TOOL (a path or $<TARGET_FILE:zline-obj2c>),

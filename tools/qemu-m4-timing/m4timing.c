@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * m4timing: a QEMU TCG plugin that ESTIMATES Cortex-M4 cycles by applying the
  * instruction timing table of the Cortex-M4 Technical Reference Manual

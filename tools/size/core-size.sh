@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Flash and static RAM of the whole core library per Cortex-M CPU, float ABI
 # and optimisation level: every .c under core/src compiled as the Cortex-M
 # toolchain file does (-ffunction-sections -fdata-sections), summed by

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Worst-case stack depth of zline's entry points, from GCC's call graph with
 # per-function stack use (-fcallgraph-info=su), for a Cortex-M build of core/.
 #   tools/stack/stack-bound.sh [CPU [LIMIT [PREFIX=LIMIT ...]]]

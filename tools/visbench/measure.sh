@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The visibility trade-off numbers of docs/VISIBILITY.md, all from one command:
 #   tools/visbench/measure.sh [BUILD_DIR] [MODEL_DIR]
 # RAM and agreement with the ray caster from zline-visbench; instructions per

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-visbench: the visibility methods side by side on the same scenes.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline fixed-point arithmetic: the one definition of every number format.
  *

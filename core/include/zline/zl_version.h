@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline's version: the one source of it. The top-level CMakeLists.txt reads
  * these three numbers for project(VERSION), so the CMake package, zline.pc

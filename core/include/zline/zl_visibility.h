@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline visibility without a per-pixel depth buffer (issue #6).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline: an integer-only 3D rasteriser for microcontrollers.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stage 1, base: fixed-point helpers (checked arithmetic, integer square
  * roots, the sine table) that every later stage uses. */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 1, base: the zline internals shared by every stage. The immediate
  * (frame) mode and the scanline/band mode (stage 5) run every triangle through

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stage 1, base: render state defaults and validation, pixel format sizes, and
  * the argument checks of meshes and line lists that every later stage shares. */
 #include "zl_internal.h"

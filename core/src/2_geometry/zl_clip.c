@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 2, geometry: clipping. A triangle whose vertices are not all inside
  * is clipped one plane at a time (Sutherland-Hodgman, in homogeneous clip

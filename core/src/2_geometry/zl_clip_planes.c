@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 2, geometry: the attribute planes of a clipped triangle, from its
  * original (unclipped) vertices. Clipping decides coverage only; the depth,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stage 2, geometry: pseudodepth, the distance -> depth mapping and its
  * precision, in integers. */
 #include "zline/zline.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 2, geometry: what the vertex, lighting and clipping files share.
  * Internal to core/src/2_geometry; later stages use zl_internal.h only.

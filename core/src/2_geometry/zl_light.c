@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 2, geometry: lighting. The light direction prepared once per draw,
  * the face normal and its diffuse intensity (an integer square root), and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stage 2, geometry: 4x4 matrices in Q16.16 (building, multiplying and
  * applying them) and the transform limits of a mesh (zl_check_geometry). */
 #include "../1_base/zl_internal.h"

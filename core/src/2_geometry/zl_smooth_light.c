@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 2, geometry: smooth (per-vertex) lighting, the SMOOTH LIGHTING
  * equation of zline.h. Once per call the lights are brought into model space

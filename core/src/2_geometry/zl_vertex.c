@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 2, geometry: vertices. Fetch and transform a vertex to clip space
  * (Q16.16, 64-bit accumulation), its outcode against the seven clip planes,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 3, raster: what the set-up, row and span files share.
  * Internal to the raster stage and the primitives built on it.

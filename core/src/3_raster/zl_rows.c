@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 3, raster: rows of flat and Gouraud triangles. The span of a set-up
  * triangle on the current row and the step to the next (zl_tri_row), all rows

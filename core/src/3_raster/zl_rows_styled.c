@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 3, raster: rows of styled triangles (zl_tri_row_ex): textures,
  * affine or perspective-correct, perspective-correct Gouraud, the texel

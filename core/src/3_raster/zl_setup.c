@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 3, raster: triangle set-up. Classify (cull, row range) and set up
  * (exact edge steppers and attribute planes) a window-space triangle, and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 3, raster: the 32-bit set-ups of the common case. A flat triangle
  * whose vertices are in the vertex cache (int16 window coordinates) is set up

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Span fill: the per-pixel loops of flat and Gouraud spans, and row clears
  * (zl_span.c). The pixel helpers are inline here because the texture and

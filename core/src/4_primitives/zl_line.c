@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 4, primitives: lines and points (the LINE RULE of zline.h), the style, and the pieces a
  * triangle becomes under the polygon modes.

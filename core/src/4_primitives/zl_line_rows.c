@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 4, primitives: the rows of lines and points (the LINE RULE of
  * zline.h): one record per segment stepped along its major axis, depth

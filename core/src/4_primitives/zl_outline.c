@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 4, primitives: outlines: the edge list of a mesh (adjacency), and the silhouette, crease
  * and border edges of it drawn as depth-tested lines (the LINE RULE).

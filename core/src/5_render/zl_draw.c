@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stage 5, render: immediate (frame) mode, meshes, lines and outlines drawn
  * straight into a full target, with the fast path of the cached flat draw. */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 5, render: scanline and band mode, the whole frame a band of rows at
  * a time. This file: the work-buffer layout and the submission of meshes,

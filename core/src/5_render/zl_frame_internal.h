@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 5, render: the records of scanline and band mode shared by its three
  * files (zl_frame.c submission, zl_frame_plan.c planning, zl_frame_rows.c

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 5, render: planning of scanline and band mode (the first band): fill
  * the vertex cache, classify every triangle once, bound the active set with

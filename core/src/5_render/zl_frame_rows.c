@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 5, render: the rows of scanline and band mode. Each row walks the
  * active list (sorted by id, so submission order holds), activates the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: scan-line hidden-surface removal with an extended active edge table: no
  * depth buffer, one row of output at a time.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: the painter's order of a mesh's triangles as an
  * index array, for transparent geometry drawn with blending (zline.h,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: painter's algorithm: sort by depth, draw far to near with no depth buffer.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: the reference ray caster: for every pixel centre, the nearest triangle
  * along the view ray.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: the ray caster's per-triangle set-up (window-space
  * edge functions and bounds, see zl_raycast.c for the method). It is its own

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: the entry point that runs the chosen row method
  * (active edge table or ray caster) over a planned scene. It sits above the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Internals shared by the visibility methods of zl_visibility.h: the scene
  * (meshes, vertex cache, kept triangles), span filling without a depth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Stage 6, visibility: the scene of the visibility methods: work-buffer layout, mesh submission,
  * planning, and the helpers the methods share.

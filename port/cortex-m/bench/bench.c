@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Cortex-M benchmark firmware (QEMU mps2-an386/an385): renders the scenes of
  * scenes.h (bunny, fill, fill_gouraud, tris) in one mode, BENCH_FRAME (frame

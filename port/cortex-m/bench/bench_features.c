@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Instructions per pixel of the issue #5 loops on Cortex-M (QEMU mps2,
  * -icount shift=6, counted with TIMER0 exactly as bench.c does): frame mode,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Smooth lighting on Cortex-M (issue 15): the lit-Gouraud bunny of scenes.h
  * (SCENE_BUNNY_SMOOTH: 1839 vertices, area-weighted normals, a key light

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Exact instruction counting with TIMER0 under QEMU -icount (bench_timer.h). */
 #include "bench_timer.h"
 

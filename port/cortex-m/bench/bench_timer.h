@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Exact instruction counting for the Cortex-M benchmark firmware: QEMU with
  * -icount shift=6 advances TIMER0 (25 MHz) by 1.6 ticks per instruction, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Exact instruction counting on QEMU's microbit board (the Cortex-M0 build,
  * port/cortex-m/qemu.cmake), the same interface as bench_timer.c.

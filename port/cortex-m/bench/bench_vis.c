@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Cortex-M benchmark of the visibility methods (issue 6, docs/VISIBILITY.md):
  * one frame of the bunny benchmark scene (scenes.h: 320x240 RGB565, camera at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Instruction budgets of the Cortex-M benchmarks (budgets.txt), shared by
  * bench.c and bench_features.c. */
 #include "budget.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Compare a measured instruction count with its budget in budgets.txt. */
 #ifndef ZLINE_BENCH_BUDGET_H
 #define ZLINE_BENCH_BUDGET_H

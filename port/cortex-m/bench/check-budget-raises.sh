@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Budget integrity (issue 13): fails when budgets.txt (Cortex-M4) or
 # budgets-m0.txt (Cortex-M0) raises a budget above the base branch's without
 # a "# raised from OLD: REASON" line directly above it (what

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Host equals target (CTest golden_host_equals_target):
 #   cmake -DHOST=zline-golden-host -DTARGET=golden.elf -DEMULATOR=a|b|c -DDIR=dir -P compare.cmake
 # Runs the host build of golden.c and the Cortex-M build under QEMU

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Golden scenes, host equals target: the same source renders the scenes of
  * scenes.h in frame mode (zl_draw_mesh into a full target) and in scanline

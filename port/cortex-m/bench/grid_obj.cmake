@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -DOUT=grid.obj -P grid_obj.cmake: the triangle-rate scene's mesh, a
 # 64 x 64 grid of cells (65 x 65 vertices at integer x, y, z = 0), each cell
 # two triangles: 8192 triangles. The benchmark maps x, y by 1/32 - 1 to clip

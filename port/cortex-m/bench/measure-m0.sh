@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Cortex-M0 benchmark tables (issue 13; README's Cortex-M0 table): builds the
 # benchmark firmware of a ZLINE_CPU=cortex-m0 build at -O2 (bench_frame_O2,
 # bench_scanline_O2, bench_features_O2), runs each under QEMU's microbit

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Cortex-M4 benchmark tables for docs/CORTEX_M.md (issue 4): builds the
 # benchmark firmware (bench.c) at -O2 and -Os in frame and scanline mode, runs
 # each under QEMU mps2-an386 with -icount shift=6 (exact instruction counts

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Per-function instruction profile of the Cortex-M4 benchmark (issue 4: "where
 # the instructions go"). Builds bench_frame_O2 and bench_scanline_O2 (the
 # firmware of measure.sh), runs each under QEMU mps2-an386 with -icount

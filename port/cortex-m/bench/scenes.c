@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The benchmark and golden scenes: see scenes.h. */
 #include "scenes.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The scenes of the Cortex-M benchmarks and of the host-equals-target test.
  * Portable: compiled for the target and for the host (bench/host).

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # README's slot sweep (issue 13): the default zl_draw_mesh (no caller vertex
 # cache) keeps recent window vertices in a direct-mapped cache inside
 # zl_context, ZL_DRAW_CACHE_SLOTS entries. For each slot count this builds

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Shell helpers shared by the benchmark table scripts (port/cortex-m/bench/
 # measure.sh, measure-m0.sh, port/riscv/bench/measure.sh), sourced after they
 # have written $R, their results file of "tag scene key value" lines.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Budgets file update shared by measure.sh (budgets.txt, Cortex-M4) and
 # measure-m0.sh (budgets-m0.txt): prints BUDGETS rewritten from SUGGEST (the
 # benchmarks' "tag scene value" suggestions, sorted). It only LOWERS budgets

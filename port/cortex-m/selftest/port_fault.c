@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Programs that must stop with a fault report instead of hanging: CTest
  * passes them when their output shows the expected report (see

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Self-test of the Cortex-M port, run under QEMU by CTest: the cases every
  * bare-metal port runs (port/common/selftest_common.h: C library, memory

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-oled-reference: the host's rendering of the OLED demo's frames
  * (../oled_scene.c), each reduced to the panel's 4-bit grey by the same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Exact instruction counting for the RISC-V benchmark firmware
  * (../../cortex-m/bench/bench_timer.h, the interface bench.c uses).

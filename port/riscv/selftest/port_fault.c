@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Programs that must stop with a trap report instead of hanging: CTest
  * passes them when their output shows picolibc's "RISCV fault" register dump

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The consumer tests' program: what a firmware would do with zline, checked
  * against a reference computed here, independently of the library.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # A bad image: zline-img2c exits 1, says which file and what is wrong, and
 # writes neither output. -DTOOL= -DIN= -DOUT= [-DARGS=extra;options]
 file(REMOVE ${OUT}.c ${OUT}.h)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-img2c: the arrays it generated at build time (compiled in here)
  * against texels computed in this file, by the formulas of zl_image.h, from

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zline-obj2c round trip: the arrays it generated at build time (compiled
  * into this test) equal, element for element, what the OBJ loader gives for
