@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stage 3, raster: span fill (see zl_span.h), the loops every flat and
  * Gouraud pixel runs, and the clears. */
 #include "zl_span.h"
@@ -679,26 +680,29 @@ typedef struct {
  */
 #if !defined(ZL_NO_ASM) && defined(__GNUC__) && (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__))
 #define ZL_FILL_ASM 1
-/* blocks x 64 bytes of the word pair from p (4-byte aligned) on. */
-static void fill_blocks_stm(uint16_t *p, uint32_t pair, uint32_t blocks)
+/* blocks x 64 bytes of the word pair from p (4-byte aligned) on; blocks > 0.
+ * naked, its parameters in r0 (p), r1 (pair), r2 (blocks): with operands
+ * left to the compiler, a -O0 hard-float build keeps r7 as its frame pointer
+ * and finds no register for them ("impossible constraints", issue 24). r7
+ * is saved and restored here, so a frame-pointer build keeps it. */
+__attribute__((naked, noinline)) static void fill_blocks_stm(uint16_t *p __attribute__((unused)),
+                                                             uint32_t pair __attribute__((unused)),
+                                                             uint32_t blocks __attribute__((unused)))
 {
-    /* r7 may be the frame pointer and r9 the platform register: not used */
-    __asm__ volatile("mov r2, %[v]\n\t"
-                     "mov r3, %[v]\n\t"
-                     "mov r4, %[v]\n\t"
-                     "mov r5, %[v]\n\t"
-                     "mov r6, %[v]\n\t"
-                     "mov r8, %[v]\n\t"
-                     "mov r10, %[v]\n\t"
-                     "mov r12, %[v]\n"
+    __asm__ volatile("push {r4, r5, r6, r7, r8, lr}\n\t"
+                     "mov r3, r1\n\t"
+                     "mov r4, r1\n\t"
+                     "mov r5, r1\n\t"
+                     "mov r6, r1\n\t"
+                     "mov r7, r1\n\t"
+                     "mov r8, r1\n\t"
+                     "mov r12, r1\n"
                      "1:\n\t"
-                     "stmia %[d]!, {r2, r3, r4, r5, r6, r8, r10, r12}\n\t"
-                     "stmia %[d]!, {r2, r3, r4, r5, r6, r8, r10, r12}\n\t"
-                     "subs %[n], %[n], #1\n\t"
-                     "bne 1b"
-                     : [d] "+r"(p), [n] "+r"(blocks)
-                     : [v] "r"(pair)
-                     : "r2", "r3", "r4", "r5", "r6", "r8", "r10", "r12", "cc", "memory");
+                     "stmia r0!, {r1, r3, r4, r5, r6, r7, r8, r12}\n\t"
+                     "stmia r0!, {r1, r3, r4, r5, r6, r7, r8, r12}\n\t"
+                     "subs r2, r2, #1\n\t"
+                     "bne 1b\n\t"
+                     "pop {r4, r5, r6, r7, r8, pc}");
 }
 #elif !defined(ZL_NO_ASM) && defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
 #define ZL_FILL_ASM 1
