@@ -11,7 +11,7 @@
 #   3b. a sample of 3 mutations (tools/mutation/mutate.py, chosen by the date):
 #       each must make the host suite fail
 #      (and, issue 11: for the hard-float M4F and M7, M33 and M55 on their
-#      boards; then the consumer tests of tests/consumer/run.sh)
+#      boards, the M4F once more at -O0 (issue 24); then the consumer tests of tests/consumer/run.sh)
 #      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
@@ -66,6 +66,11 @@ for cpu in cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
         -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu"
 done
 CTEST_EXCLUDE=
+# Issue 24: the portable suite built without optimisation (CMake's Debug:
+# -g, no -O, the compiler's -O0) on the hard-float Cortex-M4F, where the
+# inline assembly once failed to compile; about 45 s.
+run cortex-m4f-O0 -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU=cortex-m4f
 # zline as a consumer uses it: add_subdirectory (host and every CPU/ABI under
 # QEMU), install + find_package, FetchContent, pkg-config, vendored sources,
 # strict C/C++ header builds (tests/consumer/run.sh; about 1 min of CPU).
