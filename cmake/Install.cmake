@@ -27,6 +27,7 @@ install(EXPORT zlineTargets NAMESPACE zline:: DESTINATION ${ZLINE_INSTALL_CMAKED
 
 if(TARGET zline_host)
   install(FILES ${PROJECT_SOURCE_DIR}/port/host/zl_obj.h ${PROJECT_SOURCE_DIR}/port/host/zl_pnm.h
+                ${PROJECT_SOURCE_DIR}/port/host/zl_output.h
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/zline/host COMPONENT host)
   install(TARGETS zline_host EXPORT zlineHostTargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT host)

@@ -139,6 +139,11 @@ int zl_image_load(zl_image *img, const char *path, const char *alpha_path, char 
         return -1;
     }
     got = fread(magic, 1, sizeof magic, f);
+    if (ferror(f)) { /* a folder opens, and fails here with EISDIR */
+        set_msg(msg, msg_size, "%s: cannot read: %s", path, strerror(errno));
+        fclose(f);
+        return -1;
+    }
     fclose(f);
     if (got == 8 && memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0)
         st = load_png(img, path, msg, msg_size);

@@ -1,9 +1,5 @@
 /* SPDX-License-Identifier: MIT */
 /* Netpbm P6/P5 writing and reading (host port). See zl_pnm.h. */
-#if !defined(_WIN32) && !defined(_POSIX_C_SOURCE)
-#define _POSIX_C_SOURCE 200809L /* open(O_EXCL), fdopen, getpid */
-#endif
-
 #include "zl_pnm.h"
 #include "zl_read_file.h"
 
@@ -12,11 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef _WIN32
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
 
 /* Sizes above this are surely a mistake (and keep every product in size_t). */
 #define PNM_MAX_DIM 1000000u
@@ -38,18 +29,12 @@ static void set_msg(char *msg, size_t msg_size, const char *fmt, ...)
 }
 
 /* Release everything of w; remove the temporary file unless it was renamed. */
-static void writer_release(zl_pnm_writer *w, int remove_tmp)
+static void writer_release(zl_pnm_writer *w)
 {
-    if (w->file != NULL)
-        fclose(w->file);
-    if (remove_tmp && w->tmp_path != NULL)
-        remove(w->tmp_path);
+    zl_output_discard(&w->out);
     free(w->path);
-    free(w->tmp_path);
     free(w->row);
-    w->file = NULL;
     w->path = NULL;
-    w->tmp_path = NULL;
     w->row = NULL;
     w->state = W_CLOSED;
 }
@@ -61,7 +46,7 @@ static zl_pnm_status writer_fail(zl_pnm_writer *w, zl_pnm_status st, const char 
     va_start(ap, fmt);
     vmsg(w->msg, w->msg_size, fmt, ap);
     va_end(ap);
-    writer_release(w, 1);
+    writer_release(w);
     w->state = W_FAILED;
     return st;
 }
@@ -73,54 +58,6 @@ static char *dup_string(const char *s)
     if (d != NULL)
         memcpy(d, s, n);
     return d;
-}
-
-/* Create a new temporary file next to path; *tmp_out receives its name. */
-static FILE *create_temp(const char *path, char **tmp_out)
-{
-    size_t n = strlen(path) + 48;
-    char *tmp = (char *)malloc(n);
-    unsigned attempt;
-    if (tmp == NULL)
-        return NULL;
-    for (attempt = 0; attempt < 100; attempt++) {
-#ifdef _WIN32
-        FILE *f;
-        snprintf(tmp, n, "%s.tmp%u", path, attempt);
-        f = fopen(tmp, "rb");
-        if (f != NULL) { /* taken: try the next name */
-            fclose(f);
-            continue;
-        }
-        f = fopen(tmp, "wb");
-        if (f == NULL)
-            break;
-        *tmp_out = tmp;
-        return f;
-#else
-        int fd;
-        FILE *f;
-        snprintf(tmp, n, "%s.tmp%ld-%u", path, (long)getpid(), attempt);
-        /* O_EXCL: never write through someone else's file or link. 0666 and
-         * the umask give the permissions of a file made by fopen. */
-        fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-        if (fd < 0) {
-            if (errno == EEXIST)
-                continue;
-            break;
-        }
-        f = fdopen(fd, "wb");
-        if (f == NULL) {
-            close(fd);
-            remove(tmp);
-            break;
-        }
-        *tmp_out = tmp;
-        return f;
-#endif
-    }
-    free(tmp);
-    return NULL;
 }
 
 zl_pnm_status zl_pnm_open(zl_pnm_writer *w, const char *path, zl_pnm_kind kind, uint32_t width,
@@ -153,12 +90,13 @@ zl_pnm_status zl_pnm_open(zl_pnm_writer *w, const char *path, zl_pnm_kind kind, 
     w->row = (uint8_t *)malloc(row_bytes);
     if (w->path == NULL || w->row == NULL)
         return writer_fail(w, ZL_PNM_ERR_MEMORY, "%s: out of memory", path);
-    w->file = create_temp(path, &w->tmp_path);
-    if (w->file == NULL)
-        return writer_fail(w, ZL_PNM_ERR_IO, "%s: cannot create a temporary file beside it: %s",
-                           path, strerror(errno));
+    if (zl_output_open(&w->out, path, 1, msg, msg_size) != 0) {
+        writer_release(w);
+        w->state = W_FAILED;
+        return ZL_PNM_ERR_IO; /* zl_output_open's message stands */
+    }
     w->state = W_WRITING;
-    if (fprintf(w->file, "P%d\n%lu %lu\n%u\n", w->kind, (unsigned long)width, (unsigned long)height,
+    if (fprintf(w->out.file, "P%d\n%lu %lu\n%u\n", w->kind, (unsigned long)width, (unsigned long)height,
                 kind == ZL_PNM_PPM ? 255u : 65535u) < 0)
         return writer_fail(w, ZL_PNM_ERR_IO, "%s: write error: %s", path, strerror(errno));
     return ZL_PNM_OK;
@@ -223,7 +161,7 @@ static zl_pnm_status row_check(zl_pnm_writer *w, int kind)
 
 static zl_pnm_status row_put(zl_pnm_writer *w, size_t bytes)
 {
-    if (fwrite(w->row, 1, bytes, w->file) != bytes)
+    if (fwrite(w->row, 1, bytes, w->out.file) != bytes)
         return writer_fail(w, ZL_PNM_ERR_IO, "%s: write error: %s", w->path, strerror(errno));
     w->rows++;
     return ZL_PNM_OK;
@@ -271,10 +209,10 @@ zl_pnm_status zl_pnm_finish(zl_pnm_writer *w)
     if (w->rows != w->height)
         return writer_fail(w, ZL_PNM_ERR_ARG, "%s: %lu of %lu rows written", w->path,
                            (unsigned long)w->rows, (unsigned long)w->height);
-    bad = fflush(w->file) != 0 || ferror(w->file);
-    if (fclose(w->file) != 0)
+    bad = fflush(w->out.file) != 0 || ferror(w->out.file);
+    if (fclose(w->out.file) != 0)
         bad = 1;
-    w->file = NULL;
+    w->out.file = NULL;
     if (bad)
         return writer_fail(w, ZL_PNM_ERR_IO, "%s: write error: %s", w->path, strerror(errno));
     w->state = W_FINISHED;
@@ -290,13 +228,12 @@ zl_pnm_status zl_pnm_commit(zl_pnm_writer *w)
             set_msg(w->msg, w->msg_size, "PNM writer: commit before finish");
         return ZL_PNM_ERR_ARG;
     }
-#ifdef _WIN32
-    remove(w->path); /* rename does not replace there */
-#endif
-    if (rename(w->tmp_path, w->path) != 0)
-        return writer_fail(w, ZL_PNM_ERR_IO, "%s: cannot rename %s to it: %s", w->path, w->tmp_path,
-                           strerror(errno));
-    writer_release(w, 0);
+    if (zl_output_commit(&w->out, w->msg, w->msg_size) != 0) {
+        writer_release(w);
+        w->state = W_FAILED;
+        return ZL_PNM_ERR_IO;
+    }
+    writer_release(w);
     return ZL_PNM_OK;
 }
 
@@ -313,7 +250,7 @@ void zl_pnm_abort(zl_pnm_writer *w)
     if (w == NULL)
         return;
     if (w->state == W_WRITING || w->state == W_FINISHED)
-        writer_release(w, 1);
+        writer_release(w);
 }
 
 zl_pnm_status zl_pnm_write_ppm(const char *path, const void *pixels, int32_t stride,
@@ -448,10 +385,20 @@ zl_pnm_status zl_pnm_read(zl_pnm_image *img, const char *path, char *msg, size_t
         set_msg(msg, msg_size, "%s: out of memory", path);
         return ZL_PNM_ERR_MEMORY;
     }
-    for (k = 0; k < count; k++)
+    for (k = 0; k < count; k++) {
         img->samples[k] = sample_bytes == 2
                               ? (uint16_t)((unsigned)buf[i + 2 * k] << 8 | buf[i + 2 * k + 1])
                               : buf[i + k];
+        if (img->samples[k] > maxval) { /* Netpbm: no sample exceeds maxval */
+            size_t pixel = k / channels;
+            set_msg(msg, msg_size, "%s: sample %u at pixel (%lu, %lu) is above the maxval %lu", path,
+                    (unsigned)img->samples[k], (unsigned long)(pixel % width), (unsigned long)(pixel / width),
+                    (unsigned long)maxval);
+            free(buf);
+            zl_pnm_image_free(img);
+            return ZL_PNM_ERR_FORMAT;
+        }
+    }
     free(buf);
     img->width = width;
     img->height = height;

@@ -27,6 +27,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "zl_output.h"
+
 #include "zline/zline.h"
 
 #ifdef __cplusplus
@@ -48,9 +50,8 @@ typedef enum {
 
 /* A row-streaming writer. The caller owns the struct; treat it as opaque. */
 typedef struct {
-    FILE *file;
+    zl_output out;  /* the temporary file the rows go to until zl_pnm_commit */
     char *path;     /* destination */
-    char *tmp_path; /* where the rows go until zl_pnm_commit */
     uint8_t *row;   /* one converted row */
     uint32_t width, height, rows;
     int kind;

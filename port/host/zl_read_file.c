@@ -9,12 +9,12 @@
 
 static zl_read_status fail(zl_read_status st, FILE *f, char *buf, char *msg, size_t msg_size, const char *path)
 {
-    const char *why = st == ZL_READ_ERR_MEMORY ? "out of memory reading the file" : "read error";
+    const char *why = st == ZL_READ_ERR_MEMORY ? "out of memory reading the file" : strerror(errno);
     free(buf);
     if (f != NULL)
         fclose(f);
     if (msg != NULL && msg_size > 0)
-        snprintf(msg, msg_size, "%s: %s", path, why);
+        snprintf(msg, msg_size, "%s: %s%s", path, st == ZL_READ_ERR_MEMORY ? "" : "read error: ", why);
     return st;
 }
 

@@ -7,9 +7,7 @@
  * matrices are built with the core's own zl_mat4_* functions, so the image
  * is what a microcontroller running zline would draw.
  */
-#if !defined(_WIN32) && !defined(_POSIX_C_SOURCE)
-#define _POSIX_C_SOURCE 200809L /* stat: output paths compared by device and inode */
-#endif
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -18,14 +16,11 @@
 
 #include "zl_image.h"
 #include "zl_obj.h"
+#include "zl_output.h"
 #include "zl_pnm.h"
 #include "zline/zline.h"
 #include "zline/zl_visibility.h"
 #include "bsp_build.h"
-
-#ifndef _WIN32
-#include <sys/stat.h>
-#endif
 
 #define EXIT_USAGE 2
 #define CLEAR_DEPTH 65535u
@@ -227,98 +222,19 @@ static int usage_error(const char *fmt, ...)
 
 /* ------------------------------------------------------ output paths */
 
-/*
- * Which file a path names, for telling whether two paths are one file
- * (./m.obj and m.obj, an absolute path, a hard or symbolic link): an
- * existing file by its device and inode; a path that does not exist yet by
- * its directory's device and inode and its last component.
- */
-typedef struct {
-    int exists;
-    int is_regular;
-    unsigned long long dev, ino;
-    const char *base; /* last component (only for a file that does not exist) */
-} file_id;
-
-static void identify(const char *path, file_id *id)
-{
-    memset(id, 0, sizeof *id);
-#ifndef _WIN32
-    {
-        struct stat st;
-        char dir[4096];
-        const char *slash = strrchr(path, '/');
-        size_t n;
-        if (stat(path, &st) == 0) {
-            id->exists = 1;
-            id->is_regular = S_ISREG(st.st_mode);
-            id->dev = (unsigned long long)st.st_dev;
-            id->ino = (unsigned long long)st.st_ino;
-            return;
-        }
-        id->base = slash ? slash + 1 : path;
-        n = slash ? (size_t)(slash - path) : 0;
-        if (slash == NULL) {
-            strcpy(dir, ".");
-        } else if (n == 0) {
-            strcpy(dir, "/");
-        } else if (n < sizeof dir) {
-            memcpy(dir, path, n);
-            dir[n] = '\0';
-        } else {
-            id->base = path; /* absurdly long: compare whole paths */
-            return;
-        }
-        if (stat(dir, &st) == 0) {
-            id->dev = (unsigned long long)st.st_dev;
-            id->ino = (unsigned long long)st.st_ino;
-        }
-    }
-#else
-    id->base = path; /* no inodes: compare the spelling */
-#endif
-}
-
-static int same_file(const char *a, const char *b)
-{
-    file_id x, y;
-    identify(a, &x);
-    identify(b, &y);
-    if (x.exists != y.exists)
-        return 0;
-    if (x.exists)
-        return x.dev == y.dev && x.ino == y.ino;
-    return x.dev == y.dev && x.ino == y.ino && strcmp(x.base, y.base) == 0;
-}
-
-/*
- * Outputs are written to a temporary file and renamed over the path, so a
- * failed render leaves nothing behind. That would replace a FIFO or a device
- * node by a regular file, so an existing output that is not a regular file
- * is refused (write to a file and copy it there instead).
- */
+/* The output rule of every tool (zl_output.h): neither output may be the
+ * model, the texture or the other output, nor a FIFO, device, folder or
+ * read-only file. Checked before anything is read or written. */
 static int check_output_paths(const options *o)
 {
-    const char *outs[2];
-    unsigned k;
+    const char *outs[2], *ins[2];
+    char msg[512];
     outs[0] = o->out;
     outs[1] = o->depth_out;
-    if (o->depth_out != NULL && same_file(o->depth_out, o->out))
-        return usage_error("the image and --depth must be different files ('%s' and '%s' are one file)",
-                           o->out, o->depth_out);
-    for (k = 0; k < 2; k++) {
-        file_id id;
-        if (outs[k] == NULL)
-            continue;
-        if (same_file(o->model, outs[k]))
-            return usage_error("refusing to write over the model file ('%s' is '%s')", outs[k], o->model);
-        identify(outs[k], &id);
-        if (id.exists && !id.is_regular)
-            return usage_error("'%s' is not a regular file (a FIFO, device or directory): outputs are "
-                               "written to a temporary file and renamed, which would replace it; "
-                               "write to a file and copy it there",
-                               outs[k]);
-    }
+    ins[0] = o->model;
+    ins[1] = o->texture_path;
+    if (zl_output_check(outs, 2, ins, 2, msg, sizeof msg) != 0)
+        return usage_error("%s", msg);
     return 0;
 }
 
@@ -357,6 +273,22 @@ static int parse_real(const char *s, double *out)
 }
 
 /* n comma-separated reals. */
+/* The largest |component| of a direction; 0 for the zero vector or a
+ * component that is not finite (no direction). */
+static double direction_scale(const double *l)
+{
+    double m = 0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        double a = fabs(l[k]);
+        if (!(a <= DBL_MAX))
+            return 0;
+        if (a > m)
+            m = a;
+    }
+    return m;
+}
+
 static int parse_reals(const char *s, double *out, int n)
 {
     char buf[256];
@@ -801,7 +733,7 @@ static int parse_options(int argc, char **argv, options *o)
             if (o->fill_count >= 3)
                 return usage_error("--fill-light: at most 3 (4 lights with --light)");
             f = o->fill[o->fill_count];
-            if (!parse_reals(val, f, 6) || f[0] * f[0] + f[1] * f[1] + f[2] * f[2] < 1e-12 || f[3] < 0 ||
+            if (!parse_reals(val, f, 6) || direction_scale(f) == 0 || f[3] < 0 ||
                 f[3] > 255 || f[4] < 0 || f[4] > 255 || f[5] < 0 || f[5] > 255)
                 return usage_error("--fill-light: expected X,Y,Z,R,G,B with a non-zero direction and "
                                    "colours 0..255, got '%s'", val);
@@ -827,9 +759,7 @@ static int parse_options(int argc, char **argv, options *o)
         } else if (FLAG("--light")) {
             NEEDS_VALUE;
             o->have_light = 1;
-            if (!parse_reals(val, o->light, 3) ||
-                o->light[0] * o->light[0] + o->light[1] * o->light[1] + o->light[2] * o->light[2] <
-                    1e-12)
+            if (!parse_reals(val, o->light, 3) || direction_scale(o->light) == 0)
                 return usage_error("--light: expected a non-zero direction X,Y,Z, got '%s'", val);
         } else if (FLAG("--ambient")) {
             unsigned long v;
@@ -1652,13 +1582,19 @@ static int smooth_colors(const options *o, zl_obj *obj, zl_mesh *mesh, const zl_
     return 1;
 }
 
+/* The unit vector of l: scaled by its largest component first, so that any
+ * finite non-zero direction works (1e300,0,0 squared would overflow). */
 static int normalize_light(const double *l, zl_vec3 *out)
 {
-    double n = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    double u[3];
-    u[0] = l[0] / n;
-    u[1] = l[1] / n;
-    u[2] = l[2] / n;
+    double m = direction_scale(l), n, u[3];
+    int k;
+    if (m == 0)
+        return 0;
+    for (k = 0; k < 3; k++)
+        u[k] = l[k] / m;
+    n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (k = 0; k < 3; k++)
+        u[k] /= n;
     return to_vec3(u, out);
 }
 
@@ -1815,7 +1751,8 @@ int main(int argc, char **argv)
     if (ok && zl_pnm_commit(&out.image) != ZL_PNM_OK)
         ok = 0;
     if (ok && o.depth_out != NULL && zl_pnm_commit(&out.depth) != ZL_PNM_OK) {
-        remove(o.out);
+        /* The image has its name already: say so rather than delete it. */
+        fprintf(stderr, "zline-render: %s was written, the depth image was not\n", o.out);
         ok = 0;
     }
     if (!ok && msg[0] != '\0')

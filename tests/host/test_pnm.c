@@ -192,7 +192,7 @@ static void test_too_few_rows_leaves_no_file(void)
     out_path("short.pgm");
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_open(&w, path, ZL_PNM_PGM16, 3, 5, msg, sizeof msg));
     /* the temporary file exists while writing, and goes with the failure */
-    snprintf(tmp, sizeof tmp, "%s", w.tmp_path);
+    snprintf(tmp, sizeof tmp, "%s", w.out.tmp_path);
     TEST_ASSERT_TRUE(file_exists(tmp));
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_write_row_gray16(&w, row));
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_write_row_gray16(&w, row));
@@ -226,7 +226,7 @@ static void test_abort_and_wrong_row_kind(void)
     char tmp[1200];
     out_path("abort.ppm");
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_open(&w, path, ZL_PNM_PPM, 2, 2, msg, sizeof msg));
-    snprintf(tmp, sizeof tmp, "%s", w.tmp_path);
+    snprintf(tmp, sizeof tmp, "%s", w.out.tmp_path);
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_write_row_rgb(&w, rgb, ZL_FORMAT_RGB888));
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_write_row_rgb(&w, rgb, ZL_FORMAT_RGB888));
     zl_pnm_abort(&w); /* complete, but abandoned */
@@ -241,7 +241,7 @@ static void test_abort_and_wrong_row_kind(void)
     /* Finished but not committed, then abandoned. */
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_open(&w, path, ZL_PNM_PPM, 2, 1, msg, sizeof msg));
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_write_row_rgb(&w, rgb, ZL_FORMAT_RGB565));
-    snprintf(tmp, sizeof tmp, "%s", w.tmp_path);
+    snprintf(tmp, sizeof tmp, "%s", w.out.tmp_path);
     TEST_ASSERT_EQUAL_INT(ZL_PNM_OK, zl_pnm_finish(&w));
     TEST_ASSERT_FALSE(file_exists(path));
     TEST_ASSERT_TRUE(file_exists(tmp));
@@ -321,6 +321,35 @@ static void test_reader(void)
     TEST_ASSERT_EQUAL_INT(ZL_PNM_ERR_IO, zl_pnm_read(&img, path, msg, sizeof msg));
 }
 
+/* Netpbm: every sample is at most maxval (issue 26: P6 samples of 255
+ * under maxval 100 were read as grey texels); two bytes a sample from a
+ * maxval of 256 on. Independent expectations written out by hand. */
+static void test_reader_maxval(void)
+{
+    static const char above8[] = "P6\n2 1\n100\n\x01\x02\x03\x04\x65\x06";
+    static const char at8[] = "P5\n2 1\n100\n\x64\x00";
+    static const char two_bytes_256[] = "P5\n2 1\n256\n\x01\x00\x00\xff";
+    static const char above16[] = "P5\n2 1\n300\n\x00\x05\x01\x2d";
+    out_path("maxval.pnm");
+    write_raw(path, above8, sizeof above8 - 1);
+    TEST_ASSERT_EQUAL_INT(ZL_PNM_ERR_FORMAT, zl_pnm_read(&img, path, msg, sizeof msg));
+    TEST_ASSERT_TRUE_MESSAGE(strstr(msg, "sample 101 at pixel (1, 0) is above the maxval 100") != NULL, msg);
+    TEST_ASSERT_NULL(img.samples);
+    write_raw(path, at8, sizeof at8 - 1);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_PNM_OK, zl_pnm_read(&img, path, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_UINT(100, img.samples[0]);
+    zl_pnm_image_free(&img);
+    write_raw(path, two_bytes_256, sizeof two_bytes_256 - 1);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_PNM_OK, zl_pnm_read(&img, path, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_UINT(256, img.samples[0]);
+    TEST_ASSERT_EQUAL_UINT(255, img.samples[1]);
+    zl_pnm_image_free(&img);
+    write_raw(path, above16, sizeof above16 - 1);
+    TEST_ASSERT_EQUAL_INT(ZL_PNM_ERR_FORMAT, zl_pnm_read(&img, path, msg, sizeof msg));
+    TEST_ASSERT_TRUE_MESSAGE(strstr(msg, "sample 301 at pixel (1, 0) is above the maxval 300") != NULL, msg);
+    remove(path);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -335,5 +364,6 @@ int main(void)
     RUN_TEST(test_failed_write_keeps_existing_file);
     RUN_TEST(test_open_errors);
     RUN_TEST(test_reader);
+    RUN_TEST(test_reader_maxval);
     return UNITY_END();
 }

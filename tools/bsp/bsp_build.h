@@ -27,6 +27,7 @@
 #define ZLINE_BSP_BUILD_H
 
 #include <stdint.h>
+#include <stdio.h>
 
 #include "zline/zl_visibility.h"
 
@@ -54,7 +55,9 @@ int bsp_build(bsp_tree *out, const zl_fixed *positions, uint32_t vertex_count, c
 /* A zl_bsp viewing the tree's arrays. */
 zl_bsp bsp_view(const bsp_tree *t);
 void bsp_free(bsp_tree *t);
-/* Write the tree as const C arrays named NAME_*, and `const zl_bsp NAME`. */
-int bsp_write_c(const bsp_tree *t, const char *path, const char *name);
+/* Write the tree as const C arrays named NAME_*, and `const zl_bsp NAME`, to f
+ * (the caller opens and closes it: zline-bsp through the output rule of
+ * port/host/zl_output.h). 0, or -1 when the stream saw a write error. */
+int bsp_write_c(const bsp_tree *t, FILE *f, const char *name);
 
 #endif

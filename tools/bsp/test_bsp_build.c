@@ -308,7 +308,10 @@ static void test_writer_output_round_trips(void)
     TEST_ASSERT_EQUAL_INT(0, bsp_build(&t, pos, 8, idx, 4, NULL));
     TEST_ASSERT_EQUAL_UINT32(2, t.splits); /* the second quad's two triangles are cut by the first's plane */
     TEST_ASSERT_EQUAL_UINT32(8, t.triangle_count); /* A, and each cut triangle in three (a triangle and a quad) */
-    TEST_ASSERT_EQUAL_INT(0, bsp_write_c(&t, path, "crossing"));
+    f = fopen(path, "wb");
+    TEST_ASSERT_NOT_NULL(f);
+    TEST_ASSERT_EQUAL_INT(0, bsp_write_c(&t, f, "crossing"));
+    TEST_ASSERT_EQUAL_INT(0, fclose(f));
     f = fopen(path, "rb");
     TEST_ASSERT_NOT_NULL(f);
     n = fread(text, 1, sizeof text - 1, f);

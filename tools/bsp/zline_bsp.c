@@ -15,6 +15,23 @@
 
 #include "bsp_build.h"
 #include "zl_obj.h"
+#include "zl_output.h"
+
+/* The tree to path through a temporary file (the output rule, zl_output.h). */
+static int write_tree(const bsp_tree *t, const char *path, const char *name)
+{
+    zl_output out;
+    char msg[512];
+    if (zl_output_open(&out, path, 0, msg, sizeof msg) != 0 || bsp_write_c(t, out.file, name) != 0 ||
+        zl_output_commit(&out, msg, sizeof msg) != 0) {
+        if (out.file != NULL)
+            snprintf(msg, sizeof msg, "%s: write error", path);
+        zl_output_discard(&out);
+        fprintf(stderr, "zline-bsp: %s\n", msg);
+        return -1;
+    }
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
@@ -38,6 +55,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: %s [--normalize] [--candidates N] MODEL.obj OUT.c NAME\n", argv[0]);
         return 2;
     }
+    {
+        const char *outs[1], *ins[1];
+        outs[0] = argv[i + 1];
+        ins[0] = argv[i];
+        if (zl_output_check(outs, 1, ins, 1, msg, sizeof msg) != 0) {
+            fprintf(stderr, "zline-bsp: %s\n", msg);
+            return 2;
+        }
+    }
     if (zl_obj_load_file(&obj, argv[i], &oo, msg, sizeof msg) != ZL_OBJ_OK) {
         fprintf(stderr, "%s\n", msg);
         return 1;
@@ -52,7 +78,7 @@ int main(int argc, char **argv)
            (size_t)t.vertex_count * 12 + (size_t)t.triangle_count * 8 + (size_t)t.node_count * sizeof(zl_bsp_node),
            (size_t)t.vertex_count * 12, (size_t)t.triangle_count * 6, (size_t)t.triangle_count * 2,
            (size_t)t.node_count * sizeof(zl_bsp_node));
-    if (bsp_write_c(&t, argv[i + 1], argv[i + 2]) != 0) {
+    if (write_tree(&t, argv[i + 1], argv[i + 2]) != 0) {
         bsp_free(&t);
         zl_obj_free(&obj);
         return 1;
