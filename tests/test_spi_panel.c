@@ -477,6 +477,15 @@ static void test_bad_input_sends_nothing(void)
     bad = c;
     bad.y_offset = 81;
     TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_panel_init(&p, &bad, &bus));
+    /* The controller's RAM is 240 wide, 320 tall (ZL_PANEL_RAM_SHORT, _LONG):
+     * a 240-wide area fits at x offset 0 only; rotated (MV), 320 wide, at up
+     * to 80 (issue 26: no x offset was ever refused). */
+    bad = c;
+    bad.x_offset = 1;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_panel_init(&p, &bad, &bus));
+    bad.madctl = (uint8_t)(c.madctl | ZL_PANEL_MADCTL_MV);
+    bad.x_offset = 81;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_panel_init(&p, &bad, &bus));
     bad = c;
     bad.controller = 7;
     TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_panel_init(&p, &bad, &bus));

@@ -472,6 +472,13 @@ static zl_obj_status parse_vertex(parser *p, const char *cur, const char *end)
 
 #define NO_VT 0xFFFFFFFFu
 
+/* Whether a texture coordinate becomes a Q16.16 (zl_fixed) without clamping. */
+static int tex_fits(double c)
+{
+    double r = floor(c * 65536.0 + 0.5);
+    return r >= -2147483648.0 && r <= 2147483647.0;
+}
+
 /* vt (1 to 3 numbers: u and v kept) and vn (3 numbers: checked, counted). */
 static zl_obj_status parse_attribute(parser *p, const char *cur, const char *end, int normal)
 {
@@ -494,6 +501,11 @@ static zl_obj_status parse_attribute(parser *p, const char *cur, const char *end
         p->vn[p->vn_seen * 3 + 1] = uv[1];
         p->vn[p->vn_seen * 3 + 2] = uv[2];
     }
+    if (!normal && k >= 1 && k <= 3 && (!tex_fits(uv[0]) || !tex_fits(1.0 - uv[1])))
+        return fail(p, ZL_OBJ_ERR_LIMIT,
+                    "texture coordinate (%g, %g) is outside what Q16.16 holds: u and 1 - v must lie "
+                    "within -32768 .. 32767.99998",
+                    uv[0], uv[1]);
     if (!normal && k >= 1 && k <= 3) {
         GROW(p->vt, p->vt_cap, (p->vt_seen + 1) * 2);
         p->vt[p->vt_seen * 2] = uv[0];
@@ -544,6 +556,26 @@ static zl_obj_status resolve_index(parser *p, token whole, const char *s, size_t
                         seen == 1 ? what : whats);
         *out = seen - (size_t)(-v);
     }
+    return ZL_OBJ_OK;
+}
+
+/* Every corner of a face has a vt, or none has; the same for vn (a face
+ * that mixes them has no defined attributes at some corners). */
+static zl_obj_status check_corners_agree(parser *p, size_t first, size_t n)
+{
+    size_t c, with_vt = 0, with_vn = 0;
+    for (c = first; c < first + n; c++) {
+        with_vt += p->poly_vt[c] != NO_VT;
+        with_vn += p->poly_vn[c] != NO_VT;
+    }
+    if (with_vt != 0 && with_vt != n)
+        return fail(p, ZL_OBJ_ERR_PARSE,
+                    "a face mixes corners with and without a texture coordinate (vt): %lu of %lu have one",
+                    (unsigned long)with_vt, (unsigned long)n);
+    if (with_vn != 0 && with_vn != n)
+        return fail(p, ZL_OBJ_ERR_PARSE,
+                    "a face mixes corners with and without a normal (vn): %lu of %lu have one",
+                    (unsigned long)with_vn, (unsigned long)n);
     return ZL_OBJ_OK;
 }
 
@@ -606,6 +638,9 @@ static zl_obj_status parse_face(parser *p, const char *cur, const char *end)
     if (n < 3)
         return fail(p, ZL_OBJ_ERR_PARSE, "a face needs at least 3 vertices; this one has %lu",
                     (unsigned long)n);
+    st = check_corners_agree(p, first, n);
+    if (st != ZL_OBJ_OK)
+        return st;
     if (n - 2 > ZL_OBJ_MAX_TRIANGLES - p->tri_total)
         return fail(p, ZL_OBJ_ERR_LIMIT,
                     "more than %u triangles (a zl_mesh counts them in uint16): this face of %lu "

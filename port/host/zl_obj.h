@@ -141,8 +141,11 @@ zl_obj_status zl_obj_load_mem(zl_obj *obj, const char *data, size_t size, const 
 
 /* The same two loaders keeping texture coordinates: texcoords gets 2 per
  * vertex when faces use vt, and a vertex used with different vt is split into
- * one vertex per (position, vt) pair (positions and colours copied; corners
- * without vt get (0, 0)). The plain loaders never split vertices. */
+ * one vertex per (position, vt) pair (positions and colours copied; the
+ * corners of a face without vt get (0, 0)). Every corner of a face has a vt or
+ * none has, the same for vn (ZL_OBJ_ERR_PARSE otherwise), and u and 1 - v of
+ * every vt must fit Q16.16 (ZL_OBJ_ERR_LIMIT). The plain loaders never split
+ * vertices. */
 zl_obj_status zl_obj_load_file_tex(zl_obj *obj, const char *path, const zl_obj_options *opt, char *msg,
                                    size_t msg_size);
 zl_obj_status zl_obj_load_mem_tex(zl_obj *obj, const char *data, size_t size, const char *name,

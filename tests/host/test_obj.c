@@ -168,7 +168,7 @@ static void test_face_entry_formats(void)
             "f 1/1 2/2 3/3\n"
             "f 1//1 2//1 3//1\n"
             "f 1/1/1 2/2/1 3/3/1\n"
-            "f 2/1/1 3//1 4/3\n"); /* mixed forms in one face */
+            "f 2/1/1 3/2/1 4/3/1\n");
     TEST_ASSERT_EQUAL_UINT(4, obj.vertex_count);
     TEST_ASSERT_EQUAL_UINT(5, obj.triangle_count);
     TEST_ASSERT_EQUAL_UINT(5, obj.face_count);
@@ -180,13 +180,27 @@ static void test_face_entry_formats(void)
     TEST_ASSERT_EQUAL_INT32(ZL_FX_ONE, obj.positions[7]);
 }
 
+/* Issue 26: a face's corners all have a vt or none has, the same for vn
+ * (the OBJ form of a face is one of v, v/vt, v//vn, v/vt/vn throughout). */
+static void test_face_mixing_forms_is_an_error(void)
+{
+    static const char head[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n";
+    char text[256];
+    snprintf(text, sizeof text, "%sf 1 2 3\nf 2/1/1 3//1 4/3\n", head);
+    expect_error(text, 10, "a face mixes corners with and without a texture coordinate (vt): 2 of 3 have one");
+    snprintf(text, sizeof text, "%sf 1/1 2/2 3\n", head);
+    expect_error(text, 9, "(vt): 2 of 3 have one");
+    snprintf(text, sizeof text, "%sf 1//1 2 3//1 4//1\n", head);
+    expect_error(text, 9, "a face mixes corners with and without a normal (vn): 3 of 4 have one");
+}
+
 static void test_negative_indices(void)
 {
     load_ok("v 0 0 0\nv 1 0 0\nv 1 1 0\n"
             "vt 0 0\nvt 1 1\nvn 0 0 1\n"
             "f -3 -2 -1\n"
             "v 0 1 0\n"
-            "f -4/-2/-1 -2/-1/-1 -1//-1\n" /* relative to the 4 vertices so far */
+            "f -4/-2/-1 -2/-1/-1 -1/-2/-1\n" /* relative to the 4 vertices so far */
             "f 1 -3 -1\n");
     TEST_ASSERT_EQUAL_UINT(3, obj.triangle_count);
     assert_tri(0, 0, 1, 2);
@@ -903,6 +917,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_face_entry_formats);
+    RUN_TEST(test_face_mixing_forms_is_an_error);
     RUN_TEST(test_negative_indices);
     RUN_TEST(test_forward_reference);
     RUN_TEST(test_crlf_comments_and_ignored_statements);

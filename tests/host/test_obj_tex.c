@@ -88,16 +88,36 @@ static void test_seam_splits_vertices(void)
     zl_obj_free(&obj);
 }
 
-static void test_corners_without_vt_get_zero(void)
+/* A face without vt in a file whose other faces have them: (0, 0) at its
+ * corners. A face that mixes corners with and without vt is an error
+ * (issue 26), and so is a vt that Q16.16 cannot hold (once clamped). */
+static void test_faces_without_vt_get_zero(void)
 {
-    static const char text[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0.5 0.5\nf 1/1 2 3\n";
+    static const char text[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0.5 0.5\nf 1/1 2/1 3/1\nf 1 3 4\n";
+    static const char mixed[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0.5 0.5\nf 1/1 2 3\n";
+    static const char huge_u[] = "v 0 0 0\nvt 32768 0\n";
+    static const char huge_v[] = "v 0 0 0\nvt 0 0\nvt 0 -32767\n";
+    static const char edge[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt -32768 -32766.99998\nf 1/1 2/1 3/1\n";
     uint32_t i;
     TEST_ASSERT_EQUAL_INT(ZL_OBJ_OK, zl_obj_load_mem_tex(&obj, text, sizeof text - 1, "m.obj", NULL, msg, sizeof msg));
-    TEST_ASSERT_EQUAL_UINT32(3, obj.vertex_count);
-    for (i = 0; i < 3; i++) {
-        int first = obj.positions[i * 3] == 0 && obj.positions[i * 3 + 1] == 0;
-        TEST_ASSERT_EQUAL_INT32(first ? fx(0.5) : 0, obj.texcoords[i * 2]);
+    /* 1, 2, 3 with the vt; 1, 3, 4 without it: split into 6 vertices. */
+    TEST_ASSERT_EQUAL_UINT32(6, obj.vertex_count);
+    for (i = 0; i < 6; i++) {
+        unsigned tri = i < 3 ? 0u : 1u, c = i % 3u;
+        uint16_t v = obj.indices[tri * 3 + c];
+        TEST_ASSERT_EQUAL_INT32(tri == 0 ? fx(0.5) : 0, obj.texcoords[v * 2]);     /* u */
+        TEST_ASSERT_EQUAL_INT32(tri == 0 ? fx(0.5) : 0, obj.texcoords[v * 2 + 1]); /* t = 1 - v */
     }
+    zl_obj_free(&obj);
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_ERR_PARSE, zl_obj_load_mem_tex(&obj, mixed, sizeof mixed - 1, "m.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_TRUE_MESSAGE(strstr(msg, "m.obj:5: a face mixes corners") != NULL, msg);
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_ERR_LIMIT, zl_obj_load_mem_tex(&obj, huge_u, sizeof huge_u - 1, "m.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_TRUE_MESSAGE(strstr(msg, "m.obj:2: texture coordinate (32768, 0) is outside") != NULL, msg);
+    TEST_ASSERT_EQUAL_INT(ZL_OBJ_ERR_LIMIT, zl_obj_load_mem_tex(&obj, huge_v, sizeof huge_v - 1, "m.obj", NULL, msg, sizeof msg));
+    TEST_ASSERT_TRUE_MESSAGE(strstr(msg, "m.obj:3: texture coordinate") != NULL, msg);
+    /* The extremes Q16.16 holds: u = -32768, 1 - v = 32767.99998. */
+    TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_OBJ_OK, zl_obj_load_mem_tex(&obj, edge, sizeof edge - 1, "m.obj", NULL, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_INT32(INT32_MIN, obj.texcoords[0]);
     zl_obj_free(&obj);
 }
 
@@ -125,7 +145,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_quad_without_seams);
     RUN_TEST(test_seam_splits_vertices);
-    RUN_TEST(test_corners_without_vt_get_zero);
+    RUN_TEST(test_faces_without_vt_get_zero);
     RUN_TEST(test_relative_vt_counts_back_from_the_face);
     return UNITY_END();
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "zl_image.h"
 #include "zl_pnm.h"
 
 static char msg[512];
@@ -350,6 +351,27 @@ static void test_reader_maxval(void)
     remove(path);
 }
 
+/* Samples under another maxval scale to 0..255 rounded to nearest, halves
+ * up: round(s * 255 / 100) written out by hand (issue 26: truncation went
+ * unnoticed). */
+static void test_image_scales_rounding(void)
+{
+    static const char grey[] = "P5\n5 1\n100\n\x00\x01\x32\x63\x64";
+    static const uint8_t want[5] = {0, 3, 128, 252, 255}; /* 0, 2.55, 127.5, 252.45, 255 */
+    zl_image im;
+    int k;
+    out_path("scale.pgm");
+    write_raw(path, grey, sizeof grey - 1);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, zl_image_load(&im, path, NULL, msg, sizeof msg), msg);
+    for (k = 0; k < 5; k++) {
+        TEST_ASSERT_EQUAL_UINT(want[k], im.rgba[4 * k]);
+        TEST_ASSERT_EQUAL_UINT(want[k], im.rgba[4 * k + 2]);
+        TEST_ASSERT_EQUAL_UINT(255, im.rgba[4 * k + 3]);
+    }
+    zl_image_free(&im);
+    remove(path);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -365,5 +387,6 @@ int main(void)
     RUN_TEST(test_open_errors);
     RUN_TEST(test_reader);
     RUN_TEST(test_reader_maxval);
+    RUN_TEST(test_image_scales_rounding);
     return UNITY_END();
 }

@@ -3,8 +3,8 @@
 """Mutation testing of zline: does the test suite notice a broken rule?
 
 Each mutation (tools/mutation/mutations.py) names a source file by its
-basename (found by searching core/ and port/host/ recursively, so files may
-move between folders), an exact text that must occur exactly once, its
+basename (found by searching core/, port/display/, port/host/ and tools/
+recursively, so files may move between folders), an exact text that must occur exactly once, its
 replacement and a description. For each mutation the tool applies it to a
 COPY of the tree (a temporary directory: the working tree is never touched,
 so an interruption leaves nothing behind), rebuilds the host build
@@ -35,7 +35,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 from mutations import MUTATIONS  # noqa: E402
 
-SEARCH_DIRS = ("core", "port/host")
+SEARCH_DIRS = ("core", "port/display", "port/host", "tools")
 # Slow or unrelated tests left out: the cross-compiler symbol check, the
 # tools' own checks and the fuzz corpus replays (the unit tests cover them).
 # mutations_current would "kill" every mutant (its text is gone from the copy).

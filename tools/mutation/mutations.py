@@ -2,7 +2,8 @@
 """Rule-level mutations for tools/mutation/mutate.py.
 
 (id, file basename, exact text (must occur once), replacement, the rule broken)
-Files are found by basename anywhere under core/ or port/host/. The first
+Files are found by basename anywhere under core/, port/display/, port/host/ or
+tools/. The first
 group is issue 16's list (changes the suite once missed); the rest are
 classic rules of the raster contract and the loader.
 """
@@ -149,6 +150,15 @@ MUTATIONS = [
      "        if (is_ignored(t))\n            continue;\n        st = check_ascii(p, line, len);",
      "        st = check_ascii(p, line, len);\n        if (is_ignored(t) && st == ZL_OBJ_OK)\n            continue;",
      "OBJ: bytes in ignored names rejected"),
+    # --- faults mid-frame (issue 26) ----------------------------------------
+    ("frame-zeroed-band-accepted", "zl_frame_rows.c",
+     "    if (f == NULL || band == NULL || f->depth_band == NULL)",
+     "    if (f == NULL || band == NULL)",
+     "zl_frame_next_band reads a zl_frame that zl_frame_begin never set up"),
+    ("frame-mesh-after-band-accepted", "zl_frame.c",
+     "    if (f == NULL || state == NULL || f->planned || f->depth_band == NULL)",
+     "    if (f == NULL || state == NULL || f->depth_band == NULL)",
+     "a mesh added after the first band of the frame"),
     # --- PNM reading (issue 26) ---------------------------------------------
     ("pnm-maxval-256-one-byte", "zl_pnm.c",
      "sample_bytes = maxval > 255 ? 2u : 1u;",
@@ -158,6 +168,14 @@ MUTATIONS = [
      "if (img->samples[k] > maxval) {",
      "if (img->samples[k] > maxval && 0) {",
      "a PNM sample above maxval accepted"),
+    ("image-scale-truncates", "zl_image.c",
+     "    return (unsigned)((s * 255u + maxval / 2u) / maxval);",
+     "    return (unsigned)((s * 255u) / maxval);",
+     "samples under a maxval other than 255 scaled by truncation"),
+    ("panel-x-offset-ignored", "zl_spi_panel.c",
+     "(uint32_t)c->x_offset + c->width > ram_w",
+     "(uint32_t)c->width > ram_w",
+     "SPI panel: an area beyond the controller's RAM width accepted"),
     # --- the output rule of every tool (port/host/zl_output.c, issue 26) ----
     ("output-same-file-ignored", "zl_output.c",
      "    if (x->exists)\n        return x->dev == y->dev && x->ino == y->ino;",

@@ -774,6 +774,14 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  * When the submitted scene needs more, the first zl_frame_next_band fails
  * with ZL_ERR_CAPACITY before drawing anything, and zl_frame_needs() tells
  * the capacities it needs.
+ *
+ * Order and faults: zl_frame_begin first (a zeroed zl_frame is refused with
+ * ZL_ERR_ARG by every other call); meshes, lines and outlines before the
+ * first band (after it: ZL_ERR_ARG, the frame goes on); then bands until
+ * ZL_DONE, which every later call returns again. A frame may be abandoned at
+ * any point, a band callback may stop it at any band: zl_frame_begin on the
+ * same zl_frame and work buffer starts the next frame as from new (nothing
+ * of the stopped frame remains, tests/test_frame_faults.c).
  */
 typedef struct {
     uint16_t width, height;
