@@ -4,7 +4,7 @@
 # Everything comes from Debian's own archive. clang and libclang-rt-dev (libFuzzer,
 # sanitizer runtimes) build the fuzz targets; clang-tidy and cppcheck are the
 # static analysers of tools/lint/run.sh. python3 drives QEMU's display for the
-# LM3S6965 OLED test; imagemagick makes the README's frames from its captures.
+# LM3S6965 OLED test; imagemagick makes docs/PORTS.md's frames from its captures.
 # gcc-riscv64-unknown-elf, picolibc and qemu-system-misc (qemu-system-riscv32)
 # build and run the RISC-V port.
 set -eu

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# The README's OLED frames and figures, from QEMU's emulated display:
+# docs/PORTS.md's OLED frames and figures, from QEMU's emulated display:
 #   sh port/lm3s6965/readme-frames.sh [build-dir]     (default build/lm3s6965)
 # Builds the Cortex-M3 firmware and the host reference, runs the display test
 # (oled_test.py: every frame is captured with a QMP screendump while the
@@ -8,7 +8,7 @@
 # the host), then turns the captures - not the host's frames - into
 #   docs/images/oled-bunny.gif    every frame, 3x, nearest neighbour
 #   docs/images/oled-strip.png    frames 0, 4, 8, 12, 16, 20 side by side
-# and prints the firmware's RAM map and instruction counts (the README's
+# and prints the firmware's RAM map and instruction counts (docs/PORTS.md's
 # figures). Needs ImageMagick (convert) besides the build tools.
 set -eu
 top=$(cd "$(dirname "$0")/../.." && pwd)

@@ -1,17 +1,17 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""README's OLED figures against the firmware's own report.
+"""The OLED figures of docs/PORTS.md against the firmware's own report.
 
-    python3 port/lm3s6965/readme_figures.py FIRMWARE_LOG README.md
+    python3 port/lm3s6965/readme_figures.py FIRMWARE_LOG docs/PORTS.md
 
 FIRMWARE_LOG is the firmware.log that oled_test.py writes (the RAM map and
-the instruction counts the demo prints). Every figure of README's "On a real
-display" section that the firmware reports (work buffer, other .bss, .data,
+the instruction counts the demo prints). Every figure of the document's "On a
+real display" section (docs/PORTS.md; README's until 0.3.0) that the firmware reports (work buffer, other .bss, .data,
 stack reserved and used, the total and what is free, flash, instructions per
 frame, the frame-rate estimate) must be written there as measured; a drift
 names the figure and both values, and the exit status is 1. CTest runs it
-after oled_display_equals_host (oled_readme_figures), so README cannot drift
-from the firmware; sh port/lm3s6965/readme-frames.sh prints fresh figures.
+after oled_display_equals_host (oled_readme_figures), so the document cannot
+drift from the firmware; sh port/lm3s6965/readme-frames.sh prints fresh figures.
 """
 import re
 import sys
@@ -35,10 +35,11 @@ def main():
         log = open(sys.argv[1], encoding="utf-8", errors="replace").read()
     except OSError as e:
         sys.exit("readme_figures: cannot read the firmware log (run oled_test.py first): %s" % e)
-    readme = open(sys.argv[2], encoding="utf-8").read()
+    doc = sys.argv[2]
+    readme = open(doc, encoding="utf-8").read()
     start = readme.find("## On a real display")
     if start < 0:
-        sys.exit("readme_figures: README has no section '## On a real display'")
+        sys.exit("readme_figures: %s has no section '## On a real display'" % doc)
     section = readme[start:readme.find("\n## ", start + 1)]
 
     work, = grab(log, r"^\s*work buffer .*?(\d+) bytes", "work buffer")
@@ -69,17 +70,17 @@ def main():
     f = re.search(r"at most ([0-9.]+) frames", section)
     got = [int(g.replace(",", "")) for g in m.groups()] if m else None
     if got is None or any(abs(g - int(w)) > int(w) // 1000 for g, w in zip(got, (lo, hi, mean))):
-        print("DRIFT README.md, On a real display: instructions per frame: README %s, the firmware %s to %s, mean %s" %
-              (m.group(0) if m else "(not found)", commas(lo), commas(hi), commas(mean)))
+        print("DRIFT %s, On a real display: instructions per frame: document %s, the firmware %s to %s, mean %s" %
+              (doc, m.group(0) if m else "(not found)", commas(lo), commas(hi), commas(mean)))
         bad += 1
     if f is None or abs(float(f.group(1)) - float(fps)) > 0.11:
-        print("DRIFT README.md, On a real display: frame-rate estimate: README %s, the firmware %s" %
-              (f.group(1) if f else "(not found)", fps))
+        print("DRIFT %s, On a real display: frame-rate estimate: document %s, the firmware %s" %
+              (doc, f.group(1) if f else "(not found)", fps))
         bad += 1
     for what, pattern in want:
         if not re.search(pattern, section):
-            print("DRIFT README.md, On a real display: %s: the firmware reports %s" %
-                  (what, pattern.replace("\\", "")))
+            print("DRIFT %s, On a real display: %s: the firmware reports %s" %
+                  (doc, what, pattern.replace("\\", "")))
             bad += 1
     print("readme_figures: %d of %d figures as the firmware reports them" % (len(want) + 2 - bad, len(want) + 2))
     return 1 if bad else 0

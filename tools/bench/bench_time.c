@@ -18,7 +18,7 @@
  * The three images are compared byte for byte with each other before
  * timing: a benchmark of a path that draws something else measures nothing.
  * Exit status: 0, or 1 when an image differs, 2 on bad arguments or input.
- * Times depend on the machine and its load; README quotes them with the
+ * Times depend on the machine and its load; docs/MEASUREMENTS.md quotes them with the
  * machine they were measured on, never as a budget.
  */
 #define _POSIX_C_SOURCE 199309L

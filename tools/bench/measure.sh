@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Host measurements quoted in README (scanline mode, issue #3): RAM per mode
+# Host measurements quoted in docs/MEASUREMENTS.md (scanline mode, issue #3): RAM per mode
 # from the library's size function, and instructions per frame counted by
 # callgrind (exact and repeatable for the same binary and inputs).
 #   tools/bench/measure.sh [BUILD_DIR] [MODEL]

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# The claim of README's "Per-row cost against triangles elsewhere": rendering
+# The claim of docs/MEASUREMENTS.md's "Per-row cost against triangles elsewhere": rendering
 # rows 1..119 costs the same instructions whether or not 10000 more triangles
 # lie below row 130 (callgrind, exact and repeatable). Fails when crowded
 # costs more than base by over 0.1 %, or when either run fails (each run

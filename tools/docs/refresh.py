@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Refresh the measured tables of README.md and docs/*.md from the commands that produce them.
+"""Refresh the measured tables of docs/*.md (and README's headline) from the commands that produce them.
 
     python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
                                   [--riscv BUILD_DIR] [--riscv-only] [--cortex-m0 BUILD_DIR]
                                   [--slots BUILD_PREFIX] [--core-size WORK_DIR]
+    python3 tools/docs/refresh.py --check-headline
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
 KEY=total_vcache), with --host also tools/bench/measure.sh on the bunny and
@@ -20,17 +21,27 @@ plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
   * replaces the table after a line "<!-- measured: title -->" the same way;
-  * replaces the instruction and RAM columns of the README's visibility table (rows mapped below).
+  * replaces the instruction and RAM columns of docs/MEASUREMENTS.md's visibility table (rows
+    mapped below);
+  * regenerates README's headline table (after the line "<!-- headline: ... -->") from
+    docs/MEASUREMENTS.md's tables as refreshed: the bunny's RAM in frame and scanline mode
+    ("RAM, benchmark scene"), its instructions per frame on Cortex-M4 and Cortex-M0 (the two
+    "Summary" tables), copied, not re-measured (see HEADLINE below).
 Nothing else in a document changes; prose that quotes a figure must be edited by hand
 (grep for the old value). Prints what it replaced.
 
-With --check nothing is written: every figure of README.md's measured tables is compared
-with the fresh measurement, and the exit status is 1 when one drifted: an instruction
-count (any other number) by more than 0.5 % (a ratio printed with decimals may also
-differ by one unit of its last digit, its rounding), a byte count (a column whose
-heading names bytes, RAM, flash or stack) at all. CTest runs it in the Cortex-M4 build
-(docs_measured_tables) and, with --cortex-m0 alone, in the Cortex-M0 build
-(docs_measured_tables_m0), so README cannot drift from the code.
+With --check nothing is written: every figure of docs/MEASUREMENTS.md's measured tables (the
+tables README held until 0.3.0) and of README's headline table is compared with the fresh
+measurement, and the exit status is 1 when one drifted: an instruction count (any other
+number) by more than 0.5 % (a ratio printed with decimals may also differ by one unit of its
+last digit, its rounding), a byte count (a column whose heading names bytes, RAM, flash or
+stack) at all. CTest runs it in the Cortex-M4 build (docs_measured_tables), with --cortex-m0
+alone in the Cortex-M0 build (docs_measured_tables_m0) and with --riscv-only in the rv32imac
+build (docs_measured_tables_riscv), so the documents cannot drift from the code.
+
+--check-headline measures nothing: README's headline table must be exactly the one generated
+from docs/MEASUREMENTS.md as it stands (CTest docs_headline_table, host build), so the headline
+cannot be edited by hand or left behind when the measured tables are refreshed.
 """
 import os
 import re
@@ -38,8 +49,13 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DOCS = ["README.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md", "docs/PORTING.md", "port/riscv/README.md"]
-# README visibility table row -> bench_vis.c method
+DOCS = ["docs/MEASUREMENTS.md", "docs/CORTEX_M.md", "docs/VISIBILITY.md", "docs/PORTING.md",
+        "port/riscv/README.md", "README.md"]
+MEASUREMENTS = "docs/MEASUREMENTS.md"
+# What --check compares with the fresh measurement: the measured tables README held until
+# 0.3.0, and README's headline generated from them.
+CHECKED = [MEASUREMENTS, "README.md"]
+# docs/MEASUREMENTS.md visibility table row -> bench_vis.c method
 VIS_ROWS = {
     "z-buffer, frame mode": "zbuffer",
     "z-buffer, scanline mode": "scanline",
@@ -150,15 +166,18 @@ def drift(old_lines, new_lines, doc):
             rel = abs(vb - va) / max(abs(va), 1e-9)
             ok = not exact and (rel <= 0.005 or (da > 0 and abs(vb - va) <= 10 ** -da + 1e-9))
             if not ok:
-                bad.append(f"{doc}: {cells_o[1]} / {col}: README {a}, measured {b}" +
+                bad.append(f"{doc}: {cells_o[1]} / {col}: written {a}, measured {b}" +
                            ("" if exact else f" ({100 * rel:+.2f} %)"))
     return bad
 
 
-def refresh(doc, secs, vis, check=False):
-    path = os.path.join(ROOT, doc)
-    lines = open(path).read().split("\n")
-    original = list(lines)
+def read_lines(doc):
+    return open(os.path.join(ROOT, doc)).read().split("\n")
+
+
+def refresh(doc, lines, secs, vis):
+    """The document's lines with every measured table replaced; (lines, titles replaced)."""
+    lines = list(lines)
     done = []
     i = 0
     while i < len(lines):
@@ -175,15 +194,85 @@ def refresh(doc, secs, vis, check=False):
         i += 1
     for n, line in enumerate(lines):
         cells = [c.strip() for c in line.split("|")]
-        if doc == "README.md" and len(cells) > 4 and cells[1] in VIS_ROWS and vis.get(VIS_ROWS[cells[1]]):
+        if doc == MEASUREMENTS and len(cells) > 4 and cells[1] in VIS_ROWS and vis.get(VIS_ROWS[cells[1]]):
             cells[3] = vis[VIS_ROWS[cells[1]]][0]
             if vis[VIS_ROWS[cells[1]]][1]:
                 cells[2] = vis[VIS_ROWS[cells[1]]][1]
             lines[n] = "| " + " | ".join(cells[1:-1]) + " |"
-    if check:
-        return drift(original, lines, doc)
-    open(path, "w").write("\n".join(lines))
-    print(f"{doc}: {len(done)} tables: " + "; ".join(done))
+    return lines, done
+
+
+# README's headline: (row label, RAM row of "RAM, benchmark scene", instruction column of the
+# two Summary tables' bunny row). Frame mode is the default call (no caller vertex cache), as the
+# RAM table's frame row; scanline mode's RAM includes its vertex cache and triangle lists.
+HEADLINE_MARK = "<!-- headline: generated from docs/MEASUREMENTS.md by tools/docs/refresh.py -->"
+HEADLINE_RAM = "RAM, benchmark scene (bunny, 320x240, RGB565)"
+HEADLINE_M4 = "Summary, Cortex-M4 -O2 (README)"
+HEADLINE_M0 = "Summary, Cortex-M0 -O2 (README)"
+HEADLINE = [
+    ("full-frame z-buffer (`zl_draw_mesh`)", "frame (zl_draw_mesh, no vertex cache)", "frame mode"),
+    ("scanline mode (one row of depth)", "scanline (band=1)", "scanline mode"),
+]
+
+
+def table_rows(lines, key):
+    """Cells of the table under the heading or measured marker titled key."""
+    for i, line in enumerate(lines):
+        title = key_of(line.split(" ", 1)[1]) if re.match(r"#{3,4} ", line) else None
+        m = re.match(r"<!-- measured: (.*) -->$", line)
+        if (m.group(1).strip() if m else title) != key:
+            continue
+        j = i + 1
+        while j < len(lines) and not lines[j].startswith("|") and not lines[j].startswith("#"):
+            j += 1
+        rows = []
+        while j < len(lines) and lines[j].startswith("|"):
+            rows.append([c.strip() for c in lines[j].split("|")[1:-1]])
+            j += 1
+        if len(rows) > 2:
+            return rows
+    sys.exit(f"refresh.py: {MEASUREMENTS} has no table '{key}' (README's headline is made from it)")
+
+
+def cell(rows, row, col):
+    if col not in rows[0]:
+        sys.exit(f"refresh.py: {MEASUREMENTS}: no column '{col}' in the table of '{rows[0]}'")
+    for r in rows[2:]:
+        if r[0] == row:
+            return "{:,}".format(int(r[rows[0].index(col)].replace(",", "")))
+    sys.exit(f"refresh.py: {MEASUREMENTS}: no row '{row}' for README's headline")
+
+
+def headline(measurements):
+    ram, m4, m0 = (table_rows(measurements, k) for k in (HEADLINE_RAM, HEADLINE_M4, HEADLINE_M0))
+    table = ["| bunny, 320x240 | RAM (bytes) | instructions per frame, Cortex-M4 | instructions per frame, Cortex-M0 |",
+             "|---|---:|---:|---:|"]
+    for label, ram_row, col in HEADLINE:
+        table.append(f"| {label} | {cell(ram, ram_row, 'total RAM')} | {cell(m4, 'bunny', col)} | "
+                     f"{cell(m0, 'bunny', col)} |")
+    return table
+
+
+def with_headline(readme, measurements):
+    """README's lines with the table after HEADLINE_MARK regenerated."""
+    if HEADLINE_MARK not in readme:
+        sys.exit(f"refresh.py: README.md has no line {HEADLINE_MARK}")
+    return replace_table(readme, readme.index(HEADLINE_MARK) + 1, headline(measurements))
+
+
+def check_headline():
+    readme = read_lines("README.md")
+    fresh = with_headline(readme, read_lines(MEASUREMENTS))
+    if fresh == readme:
+        print(f"README.md: the headline table is the one generated from {MEASUREMENTS}")
+        return 0
+    i = readme.index(HEADLINE_MARK)
+    print(f"README.md: the headline table differs from the one generated from {MEASUREMENTS} "
+          "(python3 tools/docs/refresh.py with any measurement rewrites it):")
+    for old, new in zip(readme[i:i + 6], fresh[i:i + 6]):
+        if old != new:
+            print(f"  README:    {old}\n  generated: {new}")
+    return 1
 
 
 def m0_profiles(build):
@@ -202,6 +291,8 @@ def main():
     build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
     cortex_m0, cortex_m_named, slots, core_size = None, False, None, None
     args = sys.argv[1:]
+    if args == ["--check-headline"]:
+        sys.exit(check_headline())
     check = False
     if args and args[0] == "--check":
         check, args = True, args[1:]
@@ -254,15 +345,26 @@ def main():
     for row in secs.get("Visibility methods on Cortex-M4 (bunny, -O2)", [])[2:]:
         cells = [c.strip() for c in row.split("|")]
         vis[cells[1]] = (cells[2], cells[3] if len(cells) > 4 else "")
+    original = {doc: read_lines(doc) for doc in DOCS}
+    updated, done = {}, {}
+    for doc in DOCS:
+        updated[doc], done[doc] = refresh(doc, original[doc], secs, vis)
+    updated["README.md"] = with_headline(updated["README.md"], updated[MEASUREMENTS])
+    if updated["README.md"] != original["README.md"]:
+        done["README.md"].append("headline (from " + MEASUREMENTS + ")")
     if check:
-        bad = refresh("README.md", secs, vis, check=True)
+        bad = []
+        for doc in CHECKED:
+            bad += drift(original[doc], updated[doc], doc)
         for b in bad:
             print("DRIFT " + b)
-        print(f"README.md: {len(bad)} figures drifted from the measurement" if bad else
-              "README.md: every measured figure within its tolerance")
+        names = " and ".join(CHECKED)
+        print(f"{names}: {len(bad)} figures drifted from the measurement" if bad else
+              f"{names}: every measured figure within its tolerance")
         sys.exit(1 if bad else 0)
     for doc in DOCS:
-        refresh(doc, secs, vis)
+        open(os.path.join(ROOT, doc), "w").write("\n".join(updated[doc]))
+        print(f"{doc}: {len(done[doc])} tables: " + "; ".join(done[doc]))
 
 
 if __name__ == "__main__":

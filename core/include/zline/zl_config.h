@@ -54,7 +54,7 @@
  * bytes for the draw's transform set-up: the default 1024 is 10384 bytes
  * (zl_context is frame mode's, next to a full colour and depth target). A
  * power of two from 2 to 32768, or 0 for no cache (then each triangle
- * transforms and clips its own three vertices: slower, the same pixels). Measured on the bunny (README, Cortex-M4):
+ * transforms and clips its own three vertices: slower, the same pixels). Measured on the bunny (docs/MEASUREMENTS.md, Cortex-M4):
  * smaller caches miss more often, each miss is one vertex transform.
  * zl_context's layout depends on it: the library and its callers must be
  * built with the same value.

@@ -2,7 +2,8 @@
 /*
  * zline's version: the one source of it. The top-level CMakeLists.txt reads
  * these three numbers for project(VERSION), so the CMake package, zline.pc
- * and this header always agree (CTest version_matches_cmake checks it).
+ * and this header always agree (the consumer test 'version' of
+ * tests/consumer/run.sh checks it). What each version added: CHANGELOG.md.
  * Semantic versioning: a new MAJOR breaks the API; find_package(zline X.Y)
  * accepts any installed X.*.* at least X.Y.
  */
@@ -10,7 +11,7 @@
 #define ZLINE_VERSION_H
 
 #define ZL_VERSION_MAJOR 0
-#define ZL_VERSION_MINOR 1
+#define ZL_VERSION_MINOR 3
 #define ZL_VERSION_PATCH 0
 
 #define ZL_VERSION_STR2_(x) #x

@@ -127,7 +127,7 @@
  *
  * LIMITS (enforced: an input beyond one returns an error before any byte
  * is written; inputs at a limit render by the contract above. Tested at
- * each edge in tests/test_limits.c; the README's "What bad input gets"
+ * each edge in tests/test_limits.c; docs/CONTRACT.md's "What bad input gets"
  * lists every error.)
  *
  *   target width, height     1 .. ZL_MAX_DIM (4096)            ZL_ERR_SIZE

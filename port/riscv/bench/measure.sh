@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# RISC-V benchmark tables (README, port/riscv/README.md): builds the
+# RISC-V benchmark tables (docs/MEASUREMENTS.md, port/riscv/README.md): builds the
 # benchmark firmware (port/cortex-m/bench/bench.c with this port's minstret
 # counter) at -O2 and -Os in frame and scanline mode, runs each under
 # qemu-system-riscv32 (virt, -icount shift=0: exact instruction counts) and
