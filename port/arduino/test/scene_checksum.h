@@ -12,6 +12,10 @@
 
 #include "zline/zline.h"
 
+/* The frames both sides render: 0, 15, 30, ... 105, spread over a turn. */
+#define SCENE_CHECK_FRAMES 8u
+#define SCENE_CHECK_STEP 15u
+
 #define SCENE_FNV_BASIS UINT32_C(2166136261)
 #define SCENE_FNV_PRIME UINT32_C(16777619)
 

@@ -19,7 +19,8 @@
 static const ArduinoSpiPins pins = {53, 49, 48, 8000000UL};
 static zl_panel_bus bus;
 static zl_panel panel;
-static uint64_t work[ROTATING_SCENE_WORK_WORDS]; // zline's work buffer, 8-byte aligned
+// zline's work buffer; zline wants it 8-byte aligned, which uint64_t is not on AVR
+static uint64_t work[ROTATING_SCENE_WORK_WORDS] ROTATING_SCENE_ALIGN8;
 static uint16_t frame_index;
 static bool panel_ready;
 

@@ -29,6 +29,15 @@ extern "C" {
  * zl_frame_bytes() of rotating_scene_config's configuration (the render
  * call checks it and returns ZL_ERR_ARG if not). */
 #define ROTATING_SCENE_WORK_WORDS 393u
+/* zl_frame_begin wants the work buffer 8-byte aligned (ZL_ERR_ARG
+ * otherwise). uint64_t alone does not ensure it: on AVR its alignment is
+ * 1 byte. Declare the buffer as
+ *   static uint64_t work[ROTATING_SCENE_WORK_WORDS] ROTATING_SCENE_ALIGN8; */
+#if defined(__GNUC__)
+#define ROTATING_SCENE_ALIGN8 __attribute__((aligned(8)))
+#else
+#define ROTATING_SCENE_ALIGN8
+#endif
 
 void rotating_scene_config(zl_frame_config *cfg);
 
