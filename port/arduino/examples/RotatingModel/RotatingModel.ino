@@ -18,7 +18,8 @@
 
 static const ArduinoSpiPins pins = {53, 49, 48, 8000000UL};
 static zl_panel_bus bus;
-static zl_panel panel;
+static zl_panel panel;          // the driver's state (its fields are private)
+static zl_panel_config panel_cfg;
 // zline's work buffer; zline wants it 8-byte aligned, which uint64_t is not on AVR
 static uint64_t work[ROTATING_SCENE_WORK_WORDS] ROTATING_SCENE_ALIGN8;
 static uint16_t frame_index;
@@ -26,19 +27,19 @@ static bool panel_ready;
 
 static uint16_t panel_x()
 {
-    return (uint16_t)((panel.cfg.width - ROTATING_SCENE_W) / 2);
+    return (uint16_t)((panel_cfg.width - ROTATING_SCENE_W) / 2);
 }
 
 void setup()
 {
     Serial.begin(115200);
 #if USE_ILI9341
-    zl_panel_config cfg = zl_panel_config_ili9341_320x240();
+    panel_cfg = zl_panel_config_ili9341_320x240();
 #else
-    zl_panel_config cfg = zl_panel_config_st7789_240x240();
+    panel_cfg = zl_panel_config_st7789_240x240();
 #endif
     arduino_spi_bus_begin(&bus, &pins);
-    zl_status s = zl_panel_init(&panel, &cfg, &bus);
+    zl_status s = zl_panel_init(&panel, &panel_cfg, &bus);
     panel_ready = s == ZL_OK;
     if (!panel_ready) {
         Serial.print(F("zl_panel_init failed, zl_status "));
