@@ -2,6 +2,9 @@
 # SPDX-License-Identifier: MIT
 # Every test of zline, as CI runs it:
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
+#      (and the Arduino library, issue 24: its manifests, its example compiled
+#      for the Mega 2560 by arduino-builder, its frames on an ATmega2560 under
+#      qemu-system-avr against the host's; CTest arduino_*, about 25 s)
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer, built
 #      with clang: its -fsanitize=undefined includes float-cast-overflow,
 #      which GCC's does not (the OBJ normalisation finding of issue 16)

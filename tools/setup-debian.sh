@@ -14,6 +14,9 @@ python3 imagemagick
 gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc"
 # Consumer tests (tests/consumer): pkg-config, and g++ for the C++ header build.
 pkgs="$pkgs pkg-config g++"
+# Arduino library check (tools/arduino/check.sh): arduino-builder and the AVR
+# core compile the RotatingModel example for the Mega 2560 with avr-gcc.
+pkgs="$pkgs arduino-builder arduino-core-avr gcc-avr avr-libc binutils-avr"
 missing=""
 for p in $pkgs; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

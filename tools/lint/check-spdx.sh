@@ -8,7 +8,7 @@
 #   tools/lint/check-spdx.sh [SOURCE_DIR]    check the tree (default: this one)
 #   tools/lint/check-spdx.sh --self-test     the check itself must fail on a
 #                                            tree with one unmarked file
-# Files checked: *.c *.h *.ld *.cmake *.sh *.py *.in CMakeLists.txt .ci/run,
+# Files checked: *.c *.h *.cpp *.ino *.ld *.cmake *.sh *.py *.in CMakeLists.txt .ci/run,
 # outside build folders. The SPDX line must be within the first 3 lines
 # (after a #! line). Prints every file without it; exits 1 if there is one.
 set -eu
@@ -21,7 +21,7 @@ check_tree() { # check_tree DIR -> 0 when every file is marked
         { echo "licence_spdx: $top/LICENSE missing or not the MIT licence"; status=1; }
     list=$(mktemp)
     (cd "$top" && find . \( -name 'build*' -o -name '.git' \) -prune -o -type f \
-        \( -name '*.[ch]' -o -name '*.ld' -o -name '*.cmake' -o -name '*.sh' -o -name '*.py' \
+        \( -name '*.[ch]' -o -name '*.cpp' -o -name '*.ino' -o -name '*.ld' -o -name '*.cmake' -o -name '*.sh' -o -name '*.py' \
         -o -name '*.in' -o -name CMakeLists.txt -o -path ./.ci/run \) -print) >"$list"
     count=0
     while IFS= read -r f; do

@@ -39,7 +39,9 @@ SEARCH_DIRS = ("core", "port/display", "port/host", "tools")
 # Slow or unrelated tests left out: the cross-compiler symbol check, the
 # tools' own checks and the fuzz corpus replays (the unit tests cover them).
 # mutations_current would "kill" every mutant (its text is gone from the copy).
-DEFAULT_EXCLUDE = "core_no_float|stack_bound|depthcalc|obj2c|visbench|zline_bsp|mutations_current"
+# The arduino_ tests (about 25 s a run) compile and run the core for AVR: the
+# host suite covers the same code.
+DEFAULT_EXCLUDE = "core_no_float|stack_bound|depthcalc|obj2c|visbench|zline_bsp|mutations_current|arduino_"
 
 
 def find_file(tree, basename):

@@ -44,7 +44,7 @@ zl_status zl_fx_recip_checked(zl_fixed a, zl_fixed *out)
 /* Leading zero bits of v != 0: CLZ, one instruction on Cortex-M3 and up. */
 static unsigned clz32(uint32_t v)
 {
-#if defined(__GNUC__)
+#if defined(__GNUC__) && __SIZEOF_INT__ >= 4 /* __builtin_clz counts in an unsigned int */
     return (unsigned)__builtin_clz(v);
 #else
     unsigned n = 0;

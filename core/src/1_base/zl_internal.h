@@ -180,7 +180,7 @@ typedef struct {
 static inline void zl_div_inv_init(zl_div_inv *di, uint32_t c) /* c != 0 */
 {
     unsigned s = 0;
-#if defined(__GNUC__)
+#if defined(__GNUC__) && __SIZEOF_INT__ >= 4 /* __builtin_clz counts in an unsigned int */
     s = (unsigned)__builtin_clz(c);
 #else
     while ((c << s & 0x80000000u) == 0)

@@ -53,7 +53,7 @@ static ZL_ALWAYS_INLINE int32_t light_q14(zl_fixed c)
 /* Bit length of v (0 for 0). */
 static unsigned bit_length32(uint32_t v)
 {
-#if defined(__GNUC__)
+#if defined(__GNUC__) && __SIZEOF_INT__ >= 4 /* __builtin_clz counts in an unsigned int */
     return v == 0 ? 0u : 32u - (unsigned)__builtin_clz(v); /* CLZ */
 #else
     unsigned n = 0;

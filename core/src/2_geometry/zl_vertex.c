@@ -13,7 +13,7 @@
 /* Bit length of v (0 for 0): CLZ where the compiler has it. */
 static ZL_ALWAYS_INLINE unsigned bits_u32(uint32_t v)
 {
-#if defined(__GNUC__)
+#if defined(__GNUC__) && __SIZEOF_INT__ >= 4 /* __builtin_clz counts in an unsigned int */
     return v == 0 ? 0u : 32u - (unsigned)__builtin_clz(v);
 #else
     unsigned n = 0;
