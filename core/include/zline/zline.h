@@ -850,7 +850,9 @@ typedef struct {
 size_t zl_frame_bytes(const zl_frame_config *cfg);
 
 /* Start a frame in `work`: at least zl_frame_bytes(cfg) bytes, 8-byte aligned
- * (declare it as uint64_t work[(bytes + 7) / 8]); ZL_ERR_ARG if misaligned. */
+ * (declare it as uint64_t work[(bytes + 7) / 8]; where uint64_t is aligned
+ * to less, as on AVR, add __attribute__((aligned(8)))); ZL_ERR_ARG if
+ * misaligned. */
 zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
                          zl_rgb clear_color, uint16_t clear_depth);
 /* Submit a mesh with its transform (NULL: pixel space) and state (copied).
