@@ -151,6 +151,15 @@ static int affine_fits(int64_t a, int64_t da, int32_t n)
     return a > -lim && a < lim && end > -lim && end < lim && da > -lim && da < lim;
 }
 
+/* Whether a span's depth stepper z (Q14, rounding half added) stays below
+ * 2^30 over its n pixels, where depth_of is the shift alone (both ends
+ * checked: the values are linear). */
+static int depth_exact(uint32_t z, uint32_t dz, int32_t n)
+{
+    int64_t end = (int64_t)z + (int64_t)(n - 1) * (int32_t)dz;
+    return z < (65536u << 14) && end >= 0 && end < ((int64_t)65536 << 14);
+}
+
 static inline uint16_t texel_at(const zl_texture *tex, int64_t u8, int64_t v8)
 {
     return tex->texels[(size_t)texel_index(v8, tex->height, tex->wrap_t) * tex->stride +
@@ -203,6 +212,88 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
             u8 += su;
             v8 += sv;
         }
+    }
+}
+
+/* The texel of affine Q12 coordinates (u, v) on a texture that repeats on
+ * both axes, power-of-two width, height and stride (stride 2^s): the
+ * texel_index values ((v >> 12) & (h - 1)) * stride + ((u >> 12) & (w - 1))
+ * as two masks, an add and a shift, from u and from v' = v << s (both
+ * stepped as 32-bit words): the masks take bits 12.. of u, which are
+ * floor(u / 4096) modulo 2^20 (two's complement; wrapping adds keep them),
+ * and bits 12 + s.. of v', the same bits of v moved to the row's offset.
+ * The two fields do not overlap (stride >= width), so the add carries
+ * nothing; (h - 1) << s << 12 must fit 32 bits. */
+typedef struct {
+    const uint16_t *texels;
+    uint32_t umask, vmask; /* (w - 1) << 12; (h - 1) << (s + 12) */
+    unsigned s;
+} zl_repeat_pow2;
+
+/* Whether a texture takes zl_repeat_pow2, which it then fills in. */
+static int repeat_pow2_of(const zl_texture *tex, zl_repeat_pow2 *rp)
+{
+    unsigned s = 0;
+    if (tex->wrap_s != ZL_WRAP_REPEAT || tex->wrap_t != ZL_WRAP_REPEAT || !is_pow2(tex->stride))
+        return 0;
+    while ((1u << s) < tex->stride)
+        s++;
+    if (((uint32_t)(tex->height - 1u) << s) >= (UINT32_C(1) << 20))
+        return 0;
+    rp->texels = tex->texels;
+    rp->umask = (uint32_t)(tex->width - 1u) << 12;
+    rp->vmask = (uint32_t)(tex->height - 1u) << (s + 12u);
+    rp->s = s;
+    return 1;
+}
+
+static ZL_ALWAYS_INLINE uint16_t texel_repeat(const uint16_t *texels, uint32_t umask, uint32_t vmask, uint32_t u,
+                                              uint32_t v)
+{
+    return texels[((u & umask) + (v & vmask)) >> 12];
+}
+
+/* span_tex565's affine loop on a zl_repeat_pow2 texture, v as v' (above);
+ * depth z shifted alone when `clamp` is 0 (the caller checked the range). */
+static ZL_ALWAYS_INLINE void span_tex565_repeat(unsigned func, int clamp, const uint16_t *texels, uint32_t umask,
+                                                uint32_t vmask, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                                uint32_t dz, uint32_t u, uint32_t du, uint32_t v, uint32_t dv)
+{
+    const uint16_t *zend = zrow + n;
+    while (zrow != zend) {
+        uint32_t d = clamp ? depth_of(z) : z >> 14;
+        if (depth_pass(func, d, *zrow)) {
+            *zrow = (uint16_t)d;
+            *crow = texel_repeat(texels, umask, vmask, u, v);
+        }
+        zrow++;
+        crow++;
+        z += dz;
+        u += du;
+        v += dv;
+    }
+}
+
+static ZL_NOINLINE void span_tex565_repeat_any(unsigned func, const zl_repeat_pow2 *rp, uint16_t *crow,
+                                               uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, int64_t U,
+                                               int64_t dU, int64_t V, int64_t dV)
+{
+    /* the low 32 bits of the 64-bit planes: conversion to unsigned is modulo 2^32 */
+    uint32_t u = (uint32_t)(uint64_t)U, du = (uint32_t)(uint64_t)dU, v = (uint32_t)(uint64_t)V << rp->s,
+             dv = (uint32_t)(uint64_t)dV << rp->s;
+    const uint16_t *tx = rp->texels;
+    uint32_t um = rp->umask, vm = rp->vmask;
+    int exact = depth_exact(z, dz, n);
+    if (func == ZL_LESS) {
+        if (exact)
+            span_tex565_repeat(ZL_LESS, 0, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
+        else
+            span_tex565_repeat(ZL_LESS, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
+    } else {
+        if (exact)
+            span_tex565_repeat(ZL_LEQUAL, 0, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
+        else
+            span_tex565_repeat(ZL_LEQUAL, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
     }
 }
 
@@ -410,6 +501,11 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         /* The common case in its own loop: the texel is the pixel (RGB565,
          * unlit, all channels), depth LESS or LEQUAL with writes; the same
          * values as the general loop below, computed with fewer steps. */
+        zl_repeat_pow2 rp;
+        if (!persp && repeat_pow2_of(tex, &rp)) {
+            span_tex565_repeat_any(func, &rp, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV);
+            return;
+        }
         if (func == ZL_LESS)
             span_tex565(ZL_LESS, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
         else
