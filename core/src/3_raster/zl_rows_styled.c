@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "zl_raster.h"
+#include "zl_span_tex.h"
 
 /* ------------------------------------------------- textures, perspective */
 
@@ -29,18 +30,6 @@ static inline uint32_t texel_index_any(int64_t c8, uint16_t size, unsigned wrap)
         return texel_index(c8, size, wrap);
     i = zl_floor_shift64(c8, 8) % (int64_t)size;
     return (uint32_t)(i < 0 ? i + size : i);
-}
-
-static int is_pow2(uint16_t n)
-{
-    return (n & (n - 1u)) == 0;
-}
-
-/* round(x / 255) for 0 <= x <= 255 * 255, without a division. */
-static inline unsigned div255(unsigned x)
-{
-    x += 128u;
-    return (x + (x >> 8)) >> 8;
 }
 
 /* A texel as 8-bit r, g, b and alpha (255 for RGB565). */
@@ -151,15 +140,6 @@ static int affine_fits(int64_t a, int64_t da, int32_t n)
     return a > -lim && a < lim && end > -lim && end < lim && da > -lim && da < lim;
 }
 
-/* Whether a span's depth stepper z (Q14, rounding half added) stays below
- * 2^30 over its n pixels, where depth_of is the shift alone (both ends
- * checked: the values are linear). */
-static int depth_exact(uint32_t z, uint32_t dz, int32_t n)
-{
-    int64_t end = (int64_t)z + (int64_t)(n - 1) * (int32_t)dz;
-    return z < (65536u << 14) && end >= 0 && end < ((int64_t)65536 << 14);
-}
-
 static inline uint16_t texel_at(const zl_texture *tex, int64_t u8, int64_t v8)
 {
     return tex->texels[(size_t)texel_index(v8, tex->height, tex->wrap_t) * tex->stride +
@@ -215,44 +195,6 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
     }
 }
 
-/* The texel of affine Q12 coordinates (u, v) on a texture that repeats on
- * both axes, power-of-two width, height and stride (stride 2^s): the
- * texel_index values ((v >> 12) & (h - 1)) * stride + ((u >> 12) & (w - 1))
- * as two masks, an add and a shift, from u and from v' = v << s (both
- * stepped as 32-bit words): the masks take bits 12.. of u, which are
- * floor(u / 4096) modulo 2^20 (two's complement; wrapping adds keep them),
- * and bits 12 + s.. of v', the same bits of v moved to the row's offset.
- * The two fields do not overlap (stride >= width), so the add carries
- * nothing; (h - 1) << s << 12 must fit 32 bits. */
-typedef struct {
-    const uint16_t *texels;
-    uint32_t umask, vmask; /* (w - 1) << 12; (h - 1) << (s + 12) */
-    unsigned s;
-} zl_repeat_pow2;
-
-/* Whether a texture takes zl_repeat_pow2, which it then fills in. */
-static int repeat_pow2_of(const zl_texture *tex, zl_repeat_pow2 *rp)
-{
-    unsigned s = 0;
-    if (tex->wrap_s != ZL_WRAP_REPEAT || tex->wrap_t != ZL_WRAP_REPEAT || !is_pow2(tex->stride))
-        return 0;
-    while ((1u << s) < tex->stride)
-        s++;
-    if (((uint32_t)(tex->height - 1u) << s) >= (UINT32_C(1) << 20))
-        return 0;
-    rp->texels = tex->texels;
-    rp->umask = (uint32_t)(tex->width - 1u) << 12;
-    rp->vmask = (uint32_t)(tex->height - 1u) << (s + 12u);
-    rp->s = s;
-    return 1;
-}
-
-static ZL_ALWAYS_INLINE uint16_t texel_repeat(const uint16_t *texels, uint32_t umask, uint32_t vmask, uint32_t u,
-                                              uint32_t v)
-{
-    return texels[((u & umask) + (v & vmask)) >> 12];
-}
-
 /* span_tex565's affine loop on a zl_repeat_pow2 texture, v as v' (above);
  * depth z shifted alone when `clamp` is 0 (the caller checked the range). */
 static ZL_ALWAYS_INLINE void span_tex565_repeat(unsigned func, int clamp, const uint16_t *texels, uint32_t umask,
@@ -295,259 +237,6 @@ static ZL_NOINLINE void span_tex565_repeat_any(unsigned func, const zl_repeat_po
         else
             span_tex565_repeat(ZL_LEQUAL, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
     }
-}
-
-/* texel_index for an affine Q12 coordinate of 32 bits (power-of-two size). */
-static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsigned wrap)
-{
-    int32_t i = zl_floor_shift32(c12, 12);
-    if (wrap == ZL_WRAP_CLAMP)
-        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
-    return (uint32_t)i & (uint32_t)(size - 1u);
-}
-
-/*
- * Lanes of the blended spans: red and blue of a pixel in the two 16-bit
- * halves of one word (red high), so one multiply and one add treat both.
- * Every value a lane holds stays below 65536 (noted at each step), so no
- * lane carries into the other and each lane computes exactly what the
- * per-channel code (blend_pixel) does.
- */
-#define ZL_LANES_LO UINT32_C(0x00FF00FF)
-
-/* The old RGB565 pixel widened to 8 bits a channel (bit replication):
- * red and blue as lanes, green alone. r5 * 33 >> 2 is (r5 << 3) | (r5 >> 2)
- * (at most 1023 before the shift); the mask drops what red's shift moves
- * into blue's lane. */
-static ZL_ALWAYS_INLINE uint32_t widen_rb(uint32_t old)
-{
-    uint32_t t = old & 0xF81Fu;
-    uint32_t rb5 = (t | (t << 5)) & UINT32_C(0x001F001F);
-    return ((rb5 * 33u) >> 2) & ZL_LANES_LO;
-}
-
-static ZL_ALWAYS_INLINE uint32_t widen_g(uint32_t old)
-{
-    return ((((old >> 5) & 63u) * 65u) >> 4);
-}
-
-/* div255 in each lane of x + 128 (x + 128 at most 65153 a lane, and
- * x + 128 + (x + 128) >> 8 at most 65407): the rounded quotients, in the
- * top byte of each lane. */
-static ZL_ALWAYS_INLINE uint32_t div255_lanes_hi(uint32_t x128)
-{
-    return x128 + ((x128 >> 8) & ZL_LANES_LO);
-}
-
-/* The RGB565 pixel of lanes whose quotients are in the top byte of each
- * lane (rbq) and green's (gq: its quotient in bits 8..15). */
-static ZL_ALWAYS_INLINE uint16_t pack_hi(uint32_t rbq, uint32_t gq)
-{
-    return (uint16_t)(((rbq >> 16) & 0xF800u) | ((gq >> 5) & 0x07E0u) | ((rbq >> 11) & 0x1Fu));
-}
-
-/* Alpha: div255(s a + o (255 - a)) a channel, s a as lanes plus 128 each
- * (sa_rb) and alone plus 128 (sa_g); each sum is at most 255 * 255 + 128. */
-static ZL_ALWAYS_INLINE uint16_t blend_alpha_lanes(uint32_t old, uint32_t sa_rb, uint32_t sa_g, uint32_t na)
-{
-    uint32_t rb = div255_lanes_hi(widen_rb(old) * na + sa_rb);
-    uint32_t g = widen_g(old) * na + sa_g;
-    return pack_hi(rb, g + (g >> 8));
-}
-
-/* Additive: min(255, o + add) a channel, add already rounded (at most 255,
- * so a lane sum is at most 510: bit 8 says it saturates). */
-static ZL_ALWAYS_INLINE uint16_t blend_add_lanes(uint32_t old, uint32_t add_rb, uint32_t add_g)
-{
-    uint32_t rb = widen_rb(old) + add_rb, g = widen_g(old) + add_g;
-    uint32_t over = rb & UINT32_C(0x01000100);
-    rb = (rb | (over - (over >> 8))) & ZL_LANES_LO;
-    if (g > 255u)
-        g = 255u;
-    return (uint16_t)(((rb >> 8) & 0xF800u) | ((g >> 2) << 5) | ((rb & 0xFFu) >> 3));
-}
-
-/* A texel's channels as lanes (red, blue) and green, 8 bits each. */
-static ZL_ALWAYS_INLINE void texel_lanes(uint16_t tx, unsigned format, uint32_t *rb, uint32_t *g, unsigned *ta)
-{
-    if (format == ZL_TEXEL_RGBA4444) {
-        *rb = (((uint32_t)(tx >> 12) << 16) | ((tx >> 4) & 15u)) * 17u;
-        *g = ((tx >> 8) & 15u) * 17u;
-        *ta = (tx & 15u) * 17u;
-    } else {
-        *rb = widen_rb(tx);
-        *g = widen_g(tx);
-        *ta = 255u;
-    }
-}
-
-/* What a blended span takes its colour from: a flat colour, a texture that
- * repeats (zl_repeat_pow2), any other power-of-two texture. */
-enum { ZL_BLEND_FLAT, ZL_BLEND_REPEAT, ZL_BLEND_TEXTURE };
-
-/*
- * Blended spans in their own loop (the common case of BLENDING): native
- * RGB565, all channels, depth LESS or LEQUAL, a flat colour (src, already
- * lit) or an unlit affine texture of power-of-two size; exactly the values
- * of the general loop (blend_pixel), with the constant parts hoisted and
- * red and blue in lanes (above).
- */
-static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwrite, unsigned kind,
-                                           const zl_texture *tex, const zl_repeat_pow2 *rp, unsigned alpha,
-                                           const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
-                                           uint32_t dz, uint32_t u, uint32_t du, uint32_t v, uint32_t dv)
-{
-    uint32_t srb, sg, na = 255u - alpha;
-    int32_t i;
-    if (mode == ZL_BLEND_ADD) { /* flat: the rounded share */
-        srb = ((uint32_t)div255(src[0] * alpha) << 16) | div255(src[2] * alpha);
-        sg = div255(src[1] * alpha);
-    } else { /* flat: s a + 128 */
-        srb = ((uint32_t)(src[0] * alpha) << 16) + src[2] * alpha + UINT32_C(0x00800080);
-        sg = src[1] * alpha + 128u;
-    }
-    for (i = 0; i < n; i++) {
-        uint32_t d = depth_of(z);
-        if (depth_pass(func, d, zrow[i])) {
-            uint32_t old = crow[i], arb = srb, ag = sg, nk = na;
-            unsigned a = alpha;
-            if (kind != ZL_BLEND_FLAT) {
-                uint32_t crb, cg;
-                unsigned ta;
-                /* power-of-two sizes (the caller checked), wrap or clamp per
-                 * axis; repeat on both by zl_repeat_pow2, v as its v' */
-                uint16_t tx = kind == ZL_BLEND_REPEAT
-                                  ? texel_repeat(rp->texels, rp->umask, rp->vmask, u, v)
-                                  : tex->texels[(size_t)texel_wrap32((int32_t)v, tex->height, tex->wrap_t) * tex->stride +
-                                                texel_wrap32((int32_t)u, tex->width, tex->wrap_s)];
-                texel_lanes(tx, tex->format, &crb, &cg, &ta);
-                if (tex->format == ZL_TEXEL_RGBA4444)
-                    a = div255(alpha * ta);
-                nk = 255u - a;
-                if (mode == ZL_BLEND_ADD) {
-                    /* div255 of c a in each lane: at most 65025 + 128 */
-                    arb = (div255_lanes_hi(crb * a + UINT32_C(0x00800080)) >> 8) & ZL_LANES_LO;
-                    ag = div255(cg * a);
-                } else {
-                    arb = crb * a + UINT32_C(0x00800080);
-                    ag = cg * a + 128u;
-                }
-            }
-            if (kind == ZL_BLEND_FLAT || a != 0) { /* flat: the caller drops alpha 0 */
-                if (zwrite)
-                    zrow[i] = (uint16_t)d;
-                crow[i] = mode == ZL_BLEND_ADD ? blend_add_lanes(old, arb, ag) : blend_alpha_lanes(old, arb, ag, nk);
-            }
-        }
-        z += dz;
-        u += du;
-        v += dv;
-    }
-}
-
-/* One bilinear tap index of a power-of-two axis, from its floor index. */
-static ZL_ALWAYS_INLINE uint32_t tap_pow2(int32_t i, uint16_t size, unsigned wrap)
-{
-    if (wrap == ZL_WRAP_CLAMP)
-        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
-    return (uint32_t)i & (uint32_t)(size - 1u);
-}
-
-/* A 565 texel's channel widened to 8 bits (shift, mask, replicate). */
-static ZL_ALWAYS_INLINE unsigned ch565(unsigned t, unsigned k)
-{
-    unsigned c;
-    if (k == 0) {
-        c = t >> 11;
-        return (c << 3) | (c >> 2);
-    }
-    if (k == 1) {
-        c = (t >> 5) & 63u;
-        return (c << 2) | (c >> 4);
-    }
-    c = t & 31u;
-    return (c << 3) | (c >> 2);
-}
-
-/*
- * Bilinear spans in their own loop: an unlit affine RGB565 texture of
- * power-of-two size, unblended, into native RGB565 with all channels and
- * depth LESS or LEQUAL with writes; exactly tex_sample's values.
- */
-static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *tex, uint16_t *crow, uint16_t *zrow,
-                                              int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
-                                              int32_t dv)
-{
-    int32_t i;
-    for (i = 0; i < n; i++) {
-        uint32_t d = depth_of(z);
-        if (depth_pass(func, d, zrow[i])) {
-            int32_t pu = zl_floor_shift32(u, 4) - 128, pv = zl_floor_shift32(v, 4) - 128;
-            unsigned fx = (uint32_t)pu & 255u, fy = (uint32_t)pv & 255u, k, o[3];
-            int32_t iu = zl_floor_shift32(pu, 8), iv = zl_floor_shift32(pv, 8);
-            uint32_t x0 = tap_pow2(iu, tex->width, tex->wrap_s), x1 = tap_pow2(iu + 1, tex->width, tex->wrap_s);
-            const uint16_t *r0 = tex->texels + (size_t)tap_pow2(iv, tex->height, tex->wrap_t) * tex->stride;
-            const uint16_t *r1 = tex->texels + (size_t)tap_pow2(iv + 1, tex->height, tex->wrap_t) * tex->stride;
-            unsigned t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
-            for (k = 0; k < 3; k++) {
-                unsigned top = ch565(t00, k) * (256u - fx) + ch565(t10, k) * fx;
-                unsigned bottom = ch565(t01, k) * (256u - fx) + ch565(t11, k) * fx;
-                o[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
-            }
-            zrow[i] = (uint16_t)d;
-            crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
-        }
-        z += dz;
-        u += du;
-        v += dv;
-    }
-}
-
-/* span_blend565 with depth LESS, the blend mode and the colour's source as
- * constants (the common cases), other depth functions in one loop: each
- * its own function, so that each loop gets the registers to itself. */
-#define ZL_BLEND_ARGS                                                                                               \
-    int zwrite, const zl_texture *tex, const zl_repeat_pow2 *rp, unsigned alpha, const unsigned *src,               \
-        uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, uint32_t u, uint32_t du, uint32_t v,   \
-        uint32_t dv
-#define ZL_BLEND_PASS zwrite, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv
-#define ZL_BLEND_LOOP(NAME, MODE, KIND)                                                                             \
-    static ZL_NOINLINE void NAME(ZL_BLEND_ARGS)                                                                     \
-    {                                                                                                               \
-        span_blend565(ZL_LESS, MODE, zwrite, KIND, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);       \
-    }
-ZL_BLEND_LOOP(blend_less_alpha_flat, ZL_BLEND_ALPHA, ZL_BLEND_FLAT)
-ZL_BLEND_LOOP(blend_less_alpha_repeat, ZL_BLEND_ALPHA, ZL_BLEND_REPEAT)
-ZL_BLEND_LOOP(blend_less_alpha_texture, ZL_BLEND_ALPHA, ZL_BLEND_TEXTURE)
-ZL_BLEND_LOOP(blend_less_add_flat, ZL_BLEND_ADD, ZL_BLEND_FLAT)
-ZL_BLEND_LOOP(blend_less_add_repeat, ZL_BLEND_ADD, ZL_BLEND_REPEAT)
-ZL_BLEND_LOOP(blend_less_add_texture, ZL_BLEND_ADD, ZL_BLEND_TEXTURE)
-
-static ZL_NOINLINE void blend_other(unsigned func, unsigned mode, unsigned kind, ZL_BLEND_ARGS)
-{
-    span_blend565(func, mode, zwrite, kind, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
-}
-
-static void span_blend565_any(unsigned func, unsigned mode, int zwrite, const zl_texture *tex, unsigned alpha,
-                              const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
-                              int32_t u32, int32_t du32, int32_t v32, int32_t dv32)
-{
-    zl_repeat_pow2 rpv = {NULL, 0, 0, 0};
-    const zl_repeat_pow2 *rp = &rpv;
-    unsigned kind = tex == NULL ? ZL_BLEND_FLAT : (repeat_pow2_of(tex, &rpv) ? ZL_BLEND_REPEAT : ZL_BLEND_TEXTURE);
-    uint32_t u = (uint32_t)u32, du = (uint32_t)du32, v = (uint32_t)v32, dv = (uint32_t)dv32;
-    if (kind == ZL_BLEND_REPEAT) { /* v' = v << s (zl_repeat_pow2) */
-        v <<= rpv.s;
-        dv <<= rpv.s;
-    }
-    if (func != ZL_LESS)
-        blend_other(func, mode, kind, ZL_BLEND_PASS);
-    else if (mode == ZL_BLEND_ALPHA)
-        (kind == ZL_BLEND_FLAT ? blend_less_alpha_flat
-                               : kind == ZL_BLEND_REPEAT ? blend_less_alpha_repeat : blend_less_alpha_texture)(ZL_BLEND_PASS);
-    else
-        (kind == ZL_BLEND_FLAT ? blend_less_add_flat
-                               : kind == ZL_BLEND_REPEAT ? blend_less_add_repeat : blend_less_add_texture)(ZL_BLEND_PASS);
 }
 
 static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texplanes *tp, const zl_style *sty,
@@ -629,12 +318,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
         ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) && affine_fits(U, dU, n) &&
         affine_fits(V, dV, n)) {
-        if (func == ZL_LESS)
-            span_bilinear565(ZL_LESS, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
-                             (int32_t)V, (int32_t)dV);
-        else
-            span_bilinear565(ZL_LEQUAL, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
-                             (int32_t)V, (int32_t)dV);
+        zl_span_bilinear565(func, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU, (int32_t)V,
+                            (int32_t)dV);
         return;
     }
     if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
@@ -646,7 +331,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         src[1] = t->rgb[1];
         src[2] = t->rgb[2];
         if (sty->alpha != 0 || tex != NULL) /* constant alpha 0 discards every fragment */
-            span_blend565_any(func, blend, ss->zwrite, tex, sty->alpha, src, (uint16_t *)(void *)crow, zrow, n, z, dz,
+            zl_span_blend565(func, blend, ss->zwrite, tex, sty->alpha, src, (uint16_t *)(void *)crow, zrow, n, z, dz,
                               (int32_t)U, (int32_t)dU, (int32_t)V, (int32_t)dV);
         return;
     }
