@@ -318,8 +318,9 @@ static void test_wrap_and_clamp(void)
  * cv = 5 - 5/4 y, so the steps are fractions, both signs, and the texel
  * a pixel centre shows is floor(c) modulo the size, never at a tie (the
  * centre's fraction is 1/8, 3/8, 5/8 or 7/8). A 16 x 8 texture in rows of
- * 32 texels and a 32 x 32 one, both mappings, depth tests LESS and
- * LEQUAL. */
+ * 32 texels and a 32 x 32 one, affine and perspective mapping (exact,
+ * and exact every 8 and 16 pixels: in pixel space w is 1, and the steps,
+ * whole 1/256 texels, are exact), depth tests LESS and LEQUAL. */
 static void test_repeat_pow2_long_spans(void)
 {
     static const zl_fixed quad[] = {0, 0, 0, ZL_FX_INT(W), 0, 0, ZL_FX_INT(W), ZL_FX_INT(H), 0, 0, ZL_FX_INT(H), 0};
@@ -345,9 +346,10 @@ static void test_repeat_pow2_long_spans(void)
         uv[5] = uv[7] = (zl_fixed)((5 - 5 * H / 4) * 65536 / th);
         ctx.style.texture = &tex;
         ctx.style.texcoords = uv;
-        for (mapping = 0; mapping < 2; mapping++)
+        for (mapping = 0; mapping < 4; mapping++) /* affine, perspective exact, every 8, every 16 */
             for (func = 0; func < 2; func++) {
-                ctx.style.tex_mapping = (uint8_t)mapping;
+                ctx.style.tex_mapping = (uint8_t)(mapping != 0);
+                ctx.style.tex_every = (uint8_t)(mapping < 2 ? 0 : 4 << mapping);
                 ctx.state.depth_func = (uint8_t)(func ? ZL_LEQUAL : ZL_LESS);
                 clear();
                 TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
@@ -361,6 +363,7 @@ static void test_repeat_pow2_long_spans(void)
             }
     }
     ctx.state.depth_func = ZL_LESS;
+    ctx.style.tex_every = 0;
 }
 
 static void test_lighting_modulates_and_invalid_textures(void)

@@ -216,6 +216,63 @@ static ZL_ALWAYS_INLINE void span_tex565_repeat(unsigned func, int clamp, const 
     }
 }
 
+/* span_tex565's perspective loop exact every `every` (2^shift) pixels on a
+ * zl_repeat_pow2 texture: one reciprocal a segment (its end's, which is
+ * the next segment's start: the planes are stepped by exact adds, so
+ * every start is the value the general loop computes there), and between
+ * the exact points the 1/256-texel coordinates stepped as 32-bit words,
+ * read through the masks moved to 8 fraction bits (zl_repeat_pow2, the
+ * same argument: the masks keep bits that wrapping adds keep). */
+static ZL_ALWAYS_INLINE void span_persp_repeat(unsigned func, const zl_repeat_pow2 *rp, unsigned every,
+                                               unsigned shift, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                               uint32_t dz, int64_t U, int64_t dU, int64_t V, int64_t dV, int64_t Q,
+                                               int64_t dQ)
+{
+    const uint16_t *tx = rp->texels;
+    const uint32_t um = rp->umask >> 4, vm = rp->vmask >> 4;
+    const unsigned s = rp->s;
+    const uint16_t *zend = zrow + n;
+    uint64_t r = persp_recip(Q);
+    int64_t u8 = persp_apply(U, r), v8 = persp_apply(V, r);
+    while (zrow != zend) {
+        int32_t m = zend - zrow < (int32_t)every ? (int32_t)(zend - zrow) : (int32_t)every;
+        uint64_t r2 = persp_recip(Q + (int64_t)every * dQ);
+        int64_t u8n = persp_apply(U + (int64_t)every * dU, r2), v8n = persp_apply(V + (int64_t)every * dV, r2);
+        /* conversion to unsigned is modulo 2^32: the low bits the masks read */
+        uint32_t u = (uint32_t)(uint64_t)u8, v = (uint32_t)(uint64_t)v8 << s;
+        uint32_t su = (uint32_t)(uint64_t)zl_floor_shift64(u8n - u8, shift);
+        uint32_t sv = (uint32_t)(uint64_t)zl_floor_shift64(v8n - v8, shift) << s;
+        for (; m > 0; m--) {
+            uint32_t d = depth_of(z);
+            if (depth_pass(func, d, *zrow)) {
+                *zrow = (uint16_t)d;
+                *crow = tx[((u & um) + (v & vm)) >> 8];
+            }
+            zrow++;
+            crow++;
+            z += dz;
+            u += su;
+            v += sv;
+        }
+        Q += (int64_t)every * dQ;
+        U += (int64_t)every * dU;
+        V += (int64_t)every * dV;
+        u8 = u8n;
+        v8 = v8n;
+    }
+}
+
+static ZL_NOINLINE void span_persp_repeat_any(unsigned func, const zl_repeat_pow2 *rp, unsigned every,
+                                              unsigned shift, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                              uint32_t dz, int64_t U, int64_t dU, int64_t V, int64_t dV, int64_t Q,
+                                              int64_t dQ)
+{
+    if (func == ZL_LESS)
+        span_persp_repeat(ZL_LESS, rp, every, shift, crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+    else
+        span_persp_repeat(ZL_LEQUAL, rp, every, shift, crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+}
+
 static ZL_NOINLINE void span_tex565_repeat_any(unsigned func, const zl_repeat_pow2 *rp, uint16_t *crow,
                                                uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, int64_t U,
                                                int64_t dU, int64_t V, int64_t dV)
@@ -302,6 +359,11 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
          * unlit, all channels), depth LESS or LEQUAL with writes; the same
          * values as the general loop below, computed with fewer steps. */
         zl_repeat_pow2 rp;
+        if (persp && every > 1 && repeat_pow2_of(tex, &rp)) {
+            span_persp_repeat_any(func, &rp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
+                                  dQ);
+            return;
+        }
         if (!persp && repeat_pow2_of(tex, &rp)) {
             span_tex565_repeat_any(func, &rp, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV);
             return;
