@@ -629,9 +629,12 @@ static void test_rgb565_loop_matches_the_rule(void)
         l.count = 2;
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c, black, 65535));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_lines(&c, &l, NULL));
+        /* the pixels against the rule's own reference too (the RGB565 runs) */
+        reference_mask(pixel_of(a[0]), pixel_of(a[1]), pixel_of(b[0]), pixel_of(b[1]), 0, want);
         for (k = 0; k < W * H; k++) {
             TEST_ASSERT_EQUAL_UINT16(depth[k], z565[k]);
             TEST_ASSERT_EQUAL_INT(color[k * 3] != 0, c565[k] != 0);
+            TEST_ASSERT_EQUAL_INT(want[k], c565[k] != 0);
         }
     }
 }

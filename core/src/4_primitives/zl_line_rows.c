@@ -337,6 +337,63 @@ static int aa_row(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t
     return t->row < t->end;
 }
 
+/* The pixels of an x-major run in row t->row of a line whose edge steps by
+ * 0 (all but exact diagonals), from the run's first column (left.x is the
+ * row), RGB565, LESS with writes: zl_prim_row's
+ * loop below with the record in locals, the run's length from one
+ * division (the columns before the edge's remainder wraps, as in
+ * aa_walk565), and the depth as the high word of a 64-bit stepper biased
+ * by 1/2 (line_depth), clamped only where the run leaves 0 .. 65535. */
+static int line_run565(zl_active *t, int32_t width, uint16_t *crow, uint16_t *zrow, uint16_t pixel)
+{
+    zl_edge e = t->left;
+    int32_t count = t->right.x, ax = t->ax, dir = t->right.step, k, j;
+    int64_t zq = t->z.row, dzq = t->z.dx, zb;
+    k = e.rstep > 0 ? e.rem / e.rstep + 1 : count;
+    if (k > count)
+        k = count;
+    zb = zq + ((int64_t)1 << 31);
+    if (zb >= 0 && zb + (int64_t)(k - 1) * dzq >= 0 && zb < ((int64_t)65536 << 32) &&
+        zb + (int64_t)(k - 1) * dzq < ((int64_t)65536 << 32)) {
+        /* the high word is the depth on every pixel of the run */
+        uint64_t zu = (uint64_t)zb, dzu = (uint64_t)dzq;
+        for (j = 0; j < k; j++) {
+            uint32_t d = (uint32_t)(zu >> 32);
+            if ((uint32_t)ax < (uint32_t)width && d < zrow[ax]) {
+                zrow[ax] = (uint16_t)d;
+                crow[ax] = pixel;
+            }
+            ax += dir;
+            zu += dzu;
+        }
+    } else {
+        for (j = 0; j < k; j++) {
+            uint32_t d = line_depth(zq + (int64_t)j * dzq);
+            if ((uint32_t)ax < (uint32_t)width && d < zrow[ax]) {
+                zrow[ax] = (uint16_t)d;
+                crow[ax] = pixel;
+            }
+            ax += dir;
+        }
+    }
+    count -= k;
+    if (count == 0) {
+        t->row = t->end;
+        return 0;
+    }
+    e.rem -= k * e.rstep;
+    if (e.rem < 0) {
+        e.rem += e.den;
+        e.x++;
+    }
+    t->left = e;
+    t->ax = ax;
+    t->right.x = count;
+    t->z.row = zq + (int64_t)k * dzq;
+    t->row++;
+    return t->row < t->end;
+}
+
 int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row)
 {
     uint8_t pix[3] = {0, 0, 0};
@@ -360,6 +417,8 @@ int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint1
          * writes): the same pixels and values as plot() below. */
         uint16_t *crow = (uint16_t *)(void *)color_row, pixel;
         memcpy(&pixel, pix, 2);
+        if (t->lower_is_left && t->left.step == 0 && t->left.x == t->row)
+            return line_run565(t, ss->width, crow, depth_row, pixel);
         for (;;) {
             int32_t x = t->lower_is_left ? t->ax : t->left.x;
             uint32_t d = line_depth(t->z.row);
