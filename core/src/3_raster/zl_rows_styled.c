@@ -197,14 +197,14 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
 
 /* span_tex565's affine loop on a zl_repeat_pow2 texture, v as v' (above);
  * depth z shifted alone when `clamp` is 0 (the caller checked the range). */
-static ZL_ALWAYS_INLINE void span_tex565_repeat(unsigned func, int clamp, const uint16_t *texels, uint32_t umask,
+static ZL_ALWAYS_INLINE void span_tex565_repeat(uint32_t leq, int clamp, const uint16_t *texels, uint32_t umask,
                                                 uint32_t vmask, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                                                 uint32_t dz, uint32_t u, uint32_t du, uint32_t v, uint32_t dv)
 {
     const uint16_t *zend = zrow + n;
     while (zrow != zend) {
         uint32_t d = clamp ? depth_of(z) : z >> 14;
-        if (depth_pass(func, d, *zrow)) {
+        if (pass_lt_leq(d, *zrow, leq)) {
             *zrow = (uint16_t)d;
             *crow = texel_repeat(texels, umask, vmask, u, v);
         }
@@ -223,7 +223,7 @@ static ZL_ALWAYS_INLINE void span_tex565_repeat(unsigned func, int clamp, const 
  * the exact points the 1/256-texel coordinates stepped as 32-bit words,
  * read through the masks moved to 8 fraction bits (zl_repeat_pow2, the
  * same argument: the masks keep bits that wrapping adds keep). */
-static ZL_ALWAYS_INLINE void span_persp_repeat(unsigned func, const zl_repeat_pow2 *rp, unsigned every,
+static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow2 *rp, unsigned every,
                                                unsigned shift, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                                                uint32_t dz, int64_t U, int64_t dU, int64_t V, int64_t dV, int64_t Q,
                                                int64_t dQ)
@@ -244,7 +244,7 @@ static ZL_ALWAYS_INLINE void span_persp_repeat(unsigned func, const zl_repeat_po
         uint32_t sv = (uint32_t)(uint64_t)zl_floor_shift64(v8n - v8, shift) << s;
         for (; m > 0; m--) {
             uint32_t d = depth_of(z);
-            if (depth_pass(func, d, *zrow)) {
+            if (pass_lt_leq(d, *zrow, leq)) {
                 *zrow = (uint16_t)d;
                 *crow = tx[((u & um) + (v & vm)) >> 8];
             }
@@ -267,10 +267,7 @@ static ZL_NOINLINE void span_persp_repeat_any(unsigned func, const zl_repeat_pow
                                               uint32_t dz, int64_t U, int64_t dU, int64_t V, int64_t dV, int64_t Q,
                                               int64_t dQ)
 {
-    if (func == ZL_LESS)
-        span_persp_repeat(ZL_LESS, rp, every, shift, crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
-    else
-        span_persp_repeat(ZL_LEQUAL, rp, every, shift, crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+    span_persp_repeat(func == ZL_LEQUAL, rp, every, shift, crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
 }
 
 static ZL_NOINLINE void span_tex565_repeat_any(unsigned func, const zl_repeat_pow2 *rp, uint16_t *crow,
@@ -283,17 +280,12 @@ static ZL_NOINLINE void span_tex565_repeat_any(unsigned func, const zl_repeat_po
     const uint16_t *tx = rp->texels;
     uint32_t um = rp->umask, vm = rp->vmask;
     int exact = depth_exact(z, dz, n);
-    if (func == ZL_LESS) {
-        if (exact)
-            span_tex565_repeat(ZL_LESS, 0, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
-        else
-            span_tex565_repeat(ZL_LESS, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
-    } else {
-        if (exact)
-            span_tex565_repeat(ZL_LEQUAL, 0, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
-        else
-            span_tex565_repeat(ZL_LEQUAL, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
-    }
+    /* constants for the common case (LESS, z exact): its loop has no add
+     * for the test (leq 0) and no clamp */
+    if (exact && func == ZL_LESS)
+        span_tex565_repeat(0, 0, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
+    else
+        span_tex565_repeat(func == ZL_LEQUAL, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
 }
 
 static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texplanes *tp, const zl_style *sty,

@@ -91,7 +91,7 @@ enum { ZL_BLEND_FLAT, ZL_BLEND_REPEAT, ZL_BLEND_TEXTURE };
  * of the general loop (blend_pixel), with the constant parts hoisted and
  * red and blue in lanes (above).
  */
-static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwrite, unsigned kind,
+static ZL_ALWAYS_INLINE void span_blend565(uint32_t leq, unsigned mode, int zwrite, unsigned kind,
                                            const zl_texture *tex, const zl_repeat_pow2 *rp, unsigned alpha,
                                            const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                                            uint32_t dz, uint32_t u, uint32_t du, uint32_t v, uint32_t dv)
@@ -107,7 +107,7 @@ static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwr
     }
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
-        if (depth_pass(func, d, zrow[i])) {
+        if (pass_lt_leq(d, zrow[i], leq)) {
             uint32_t old = crow[i], arb = srb, ag = sg, nk = na;
             unsigned a = alpha;
             if (kind != ZL_BLEND_FLAT) {
@@ -202,30 +202,25 @@ static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *t
     }
 }
 
-/* span_blend565 with depth LESS, the blend mode and the colour's source as
- * constants (the common cases), other depth functions in one loop: each
- * its own function, so that each loop gets the registers to itself. */
+/* span_blend565 with the blend mode and the colour's source as constants,
+ * the depth test LESS or LEQUAL (pass_lt_leq): each its own function, so
+ * that each loop gets the registers to itself. */
 #define ZL_BLEND_ARGS                                                                                               \
-    int zwrite, const zl_texture *tex, const zl_repeat_pow2 *rp, unsigned alpha, const unsigned *src,               \
+    uint32_t leq, int zwrite, const zl_texture *tex, const zl_repeat_pow2 *rp, unsigned alpha, const unsigned *src, \
         uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, uint32_t u, uint32_t du, uint32_t v,   \
         uint32_t dv
-#define ZL_BLEND_PASS zwrite, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv
+#define ZL_BLEND_PASS leq, zwrite, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv
 #define ZL_BLEND_LOOP(NAME, MODE, KIND)                                                                             \
     static ZL_NOINLINE void NAME(ZL_BLEND_ARGS)                                                                     \
     {                                                                                                               \
-        span_blend565(ZL_LESS, MODE, zwrite, KIND, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);       \
+        span_blend565(leq, MODE, zwrite, KIND, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);           \
     }
-ZL_BLEND_LOOP(blend_less_alpha_flat, ZL_BLEND_ALPHA, ZL_BLEND_FLAT)
-ZL_BLEND_LOOP(blend_less_alpha_repeat, ZL_BLEND_ALPHA, ZL_BLEND_REPEAT)
-ZL_BLEND_LOOP(blend_less_alpha_texture, ZL_BLEND_ALPHA, ZL_BLEND_TEXTURE)
-ZL_BLEND_LOOP(blend_less_add_flat, ZL_BLEND_ADD, ZL_BLEND_FLAT)
-ZL_BLEND_LOOP(blend_less_add_repeat, ZL_BLEND_ADD, ZL_BLEND_REPEAT)
-ZL_BLEND_LOOP(blend_less_add_texture, ZL_BLEND_ADD, ZL_BLEND_TEXTURE)
-
-static ZL_NOINLINE void blend_other(unsigned func, unsigned mode, unsigned kind, ZL_BLEND_ARGS)
-{
-    span_blend565(func, mode, zwrite, kind, tex, rp, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
-}
+ZL_BLEND_LOOP(blend_alpha_flat, ZL_BLEND_ALPHA, ZL_BLEND_FLAT)
+ZL_BLEND_LOOP(blend_alpha_repeat, ZL_BLEND_ALPHA, ZL_BLEND_REPEAT)
+ZL_BLEND_LOOP(blend_alpha_texture, ZL_BLEND_ALPHA, ZL_BLEND_TEXTURE)
+ZL_BLEND_LOOP(blend_add_flat, ZL_BLEND_ADD, ZL_BLEND_FLAT)
+ZL_BLEND_LOOP(blend_add_repeat, ZL_BLEND_ADD, ZL_BLEND_REPEAT)
+ZL_BLEND_LOOP(blend_add_texture, ZL_BLEND_ADD, ZL_BLEND_TEXTURE)
 
 void zl_span_blend565(unsigned func, unsigned mode, int zwrite, const zl_texture *tex, unsigned alpha,
                               const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
@@ -239,19 +234,76 @@ void zl_span_blend565(unsigned func, unsigned mode, int zwrite, const zl_texture
         v <<= rpv.s;
         dv <<= rpv.s;
     }
-    if (func != ZL_LESS)
-        blend_other(func, mode, kind, ZL_BLEND_PASS);
-    else if (mode == ZL_BLEND_ALPHA)
-        (kind == ZL_BLEND_FLAT ? blend_less_alpha_flat
-                               : kind == ZL_BLEND_REPEAT ? blend_less_alpha_repeat : blend_less_alpha_texture)(ZL_BLEND_PASS);
+    uint32_t leq = func == ZL_LEQUAL;
+    if (mode == ZL_BLEND_ALPHA)
+        (kind == ZL_BLEND_FLAT ? blend_alpha_flat
+                               : kind == ZL_BLEND_REPEAT ? blend_alpha_repeat : blend_alpha_texture)(ZL_BLEND_PASS);
     else
-        (kind == ZL_BLEND_FLAT ? blend_less_add_flat
-                               : kind == ZL_BLEND_REPEAT ? blend_less_add_repeat : blend_less_add_texture)(ZL_BLEND_PASS);
+        (kind == ZL_BLEND_FLAT ? blend_add_flat : kind == ZL_BLEND_REPEAT ? blend_add_repeat : blend_add_texture)(
+            ZL_BLEND_PASS);
+}
+
+/* The second stage of a bilinear channel: (top (256 - fy) + bottom fy +
+ * 32768) >> 16, top and bottom below 2^16. */
+static ZL_ALWAYS_INLINE uint32_t bilerp_y(uint32_t top, uint32_t bottom, uint32_t fy)
+{
+    return (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+}
+
+/*
+ * span_bilinear565 on a texture that repeats on both axes (zl_repeat_pow2):
+ * the taps by masks (p = c - 1/2 is u - 2048 in Q12; its bits 4..11 are
+ * the fraction in 1/256, bits 12.. the floor, both kept by wrapping adds),
+ * and the first stage (along x) of red and blue in the two 16-bit lanes of
+ * a word: c (256 - fx) + c' fx is at most 255 * 256 a lane. The second
+ * stage needs 24 bits a channel, so it takes them one by one. Exactly
+ * tex_sample's values.
+ */
+static ZL_ALWAYS_INLINE void span_bilinear565_repeat(uint32_t leq, const zl_repeat_pow2 *rp, uint16_t *crow,
+                                                     uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, uint32_t u,
+                                                     uint32_t du, uint32_t v, uint32_t dv)
+{
+    const uint16_t *tx = rp->texels;
+    const uint32_t wm = rp->umask >> 12, rm = rp->vmask >> 12, stride = UINT32_C(1) << rp->s;
+    int32_t i;
+    u -= 2048u;
+    v -= 2048u;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        if (pass_lt_leq(d, zrow[i], leq)) {
+            uint32_t fx = (u >> 4) & 255u, fy = (v >> 4) & 255u, gx = 256u - fx;
+            uint32_t x0 = (u >> 12) & wm, x1 = (x0 + 1u) & wm;
+            uint32_t y0 = ((v >> 12) << rp->s) & rm, y1 = (y0 + stride) & rm;
+            uint32_t t00 = tx[y0 + x0], t10 = tx[y0 + x1], t01 = tx[y1 + x0], t11 = tx[y1 + x1];
+            uint32_t top = widen_rb(t00) * gx + widen_rb(t10) * fx;
+            uint32_t bottom = widen_rb(t01) * gx + widen_rb(t11) * fx;
+            uint32_t gt = widen_g(t00) * gx + widen_g(t10) * fx, gb = widen_g(t01) * gx + widen_g(t11) * fx;
+            uint32_t r = bilerp_y(top >> 16, bottom >> 16, fy), b = bilerp_y(top & 0xFFFFu, bottom & 0xFFFFu, fy);
+            uint32_t g = bilerp_y(gt, gb, fy);
+            zrow[i] = (uint16_t)d;
+            crow[i] = (uint16_t)(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+        }
+        z += dz;
+        u += du;
+        v += dv;
+    }
+}
+
+static ZL_NOINLINE void bilinear_repeat_any(unsigned func, const zl_repeat_pow2 *rp, uint16_t *crow, uint16_t *zrow,
+                                            int32_t n, uint32_t z, uint32_t dz, uint32_t u, uint32_t du, uint32_t v,
+                                            uint32_t dv)
+{
+    span_bilinear565_repeat(func == ZL_LEQUAL, rp, crow, zrow, n, z, dz, u, du, v, dv);
 }
 
 void zl_span_bilinear565(unsigned func, const zl_texture *tex, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                          uint32_t dz, int32_t u, int32_t du, int32_t v, int32_t dv)
 {
+    zl_repeat_pow2 rp;
+    if (repeat_pow2_of(tex, &rp)) {
+        bilinear_repeat_any(func, &rp, crow, zrow, n, z, dz, (uint32_t)u, (uint32_t)du, (uint32_t)v, (uint32_t)dv);
+        return;
+    }
     if (func == ZL_LESS)
         span_bilinear565(ZL_LESS, tex, crow, zrow, n, z, dz, u, du, v, dv);
     else

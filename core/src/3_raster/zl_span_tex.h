@@ -77,6 +77,15 @@ static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsign
     return (uint32_t)i & (uint32_t)(size - 1u);
 }
 
+/* The depth test of the LESS / LEQUAL loops below and in zl_rows_styled.c:
+ * d < stored (LESS) or d <= stored (LEQUAL) as d < stored + leq, leq 1 for
+ * LEQUAL (stored + 1 is at most 65536): one compare either way, so one
+ * loop serves both tests. */
+static ZL_ALWAYS_INLINE int pass_lt_leq(uint32_t d, uint32_t stored, uint32_t leq)
+{
+    return d < stored + leq;
+}
+
 /* Blended spans (zl_span_tex.c): native RGB565, all channels, depth func
  * LESS or LEQUAL (zwrite: with writes), mode ZL_BLEND_ALPHA or ZL_BLEND_ADD,
  * a flat colour src (tex NULL) or an unlit affine power-of-two texture at

@@ -155,43 +155,21 @@ static ZL_ALWAYS_INLINE void aa_step_weight(zl_active *t, zl_aa_weight *a)
     t->right.x--;
 }
 
-/* One pixel of an x-major row: blend(), or with `fast` (a constant: native
- * RGB565, all channels, crow 2-byte aligned) the same values inline, the
- * colour as blend565 takes it (crb, cg). */
-static ZL_ALWAYS_INLINE void aa_pixel(int fast, unsigned func, const zl_span_state *ss, const zl_active *t,
-                                      uint8_t *crow, uint16_t *zrow, int32_t x, uint32_t d, unsigned w, uint32_t crb,
-                                      uint32_t cg)
-{
-    uint16_t *c;
-    if (!fast) {
-        blend(ss, t, crow, zrow, x, d, w);
-        return;
-    }
-    if (w == 0 || x < 0 || x >= ss->width)
-        return;
-    if (func != ZL_ALWAYS && !depth_pass(func, d, zrow[x]))
-        return;
-    c = (uint16_t *)(void *)crow;
-    c[x] = blend565(c[x], crb, cg, w);
-}
-
 /* The columns of x-major row r (see aa_row): from the record on, those
  * whose floor(n) is r - 1 (lower pixels) then r (upper ones: the first of
  * them is where the next row starts); floor(n) never falls along a run. */
-static ZL_ALWAYS_INLINE void aa_walk(int fast, unsigned func, zl_active *t, const zl_span_state *ss, uint8_t *crow,
-                                     uint16_t *zrow)
+static void aa_walk(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
 {
     int32_t r = t->row;
     zl_active l = *t;
     zl_aa_weight aw;
-    uint32_t crb = ((uint32_t)t->rgb[0] << 16) | t->rgb[2], cg = t->rgb[1];
     int saved = 0;
     aa_weight_init(&aw, &l.left);
     while (l.right.x > 0 && l.left.x <= r) {
         unsigned w = (unsigned)aw.w;
         uint32_t d = line_depth(l.z.row);
         if (l.left.x == r - 1) {
-            aa_pixel(fast, func, ss, t, crow, zrow, l.ax, d, w, crb, cg);
+            blend(ss, t, crow, zrow, l.ax, d, w);
         } else {
             if (!saved) {
                 t->left = l.left;
@@ -200,7 +178,7 @@ static ZL_ALWAYS_INLINE void aa_walk(int fast, unsigned func, zl_active *t, cons
                 t->z.row = l.z.row;
                 saved = 1;
             }
-            aa_pixel(fast, func, ss, t, crow, zrow, l.ax, d, 255u - w, crb, cg);
+            blend(ss, t, crow, zrow, l.ax, d, 255u - w);
         }
         aa_step_weight(&l, &aw);
     }
@@ -223,7 +201,7 @@ typedef struct {
     int64_t z, dz;
 } zl_aa_run;
 
-static ZL_ALWAYS_INLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k, unsigned flip, uint16_t *crow,
+static ZL_NOINLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k, unsigned flip, uint16_t *crow,
                                          const uint16_t *zrow, uint32_t width, uint32_t crb, uint32_t cg)
 {
     int32_t ax = ru->ax, dir = ru->dir, w = ru->w, wr = ru->wr, qs = ru->qs, rs = ru->rs, den = ru->den;
@@ -250,11 +228,10 @@ static ZL_ALWAYS_INLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k
     ru->z = z;
 }
 
-/* aa_walk for native RGB565 with all channels and an edge of step 0 (all
- * but exact diagonals): the same pixels and values, the run cut where
+/* aa_walk for native RGB565 with all channels, depth LESS, and an edge of
+ * step 0 (all but exact diagonals): the same pixels and values, the run cut where
  * floor(n) changes (one division a phase), each phase a tight loop. */
-static ZL_ALWAYS_INLINE void aa_walk565(unsigned func, zl_active *t, const zl_span_state *ss, uint8_t *crow8,
-                                        uint16_t *zrow)
+static ZL_NOINLINE void aa_walk565(zl_active *t, const zl_span_state *ss, uint8_t *crow8, uint16_t *zrow)
 {
     int32_t r = t->row, count = t->right.x;
     uint16_t *crow = (uint16_t *)(void *)crow8;
@@ -286,7 +263,7 @@ static ZL_ALWAYS_INLINE void aa_walk565(unsigned func, zl_active *t, const zl_sp
             t->z.row = ru.z;
             saved = 1;
         }
-        aa_phase565(func, &ru, k, upper ? 255u : 0u, crow, zrow, ss->width, crb, cg);
+        aa_phase565(ZL_LESS, &ru, k, upper ? 255u : 0u, crow, zrow, ss->width, crb, cg);
         count -= k;
         e.rem -= k * e.rstep;
         if (e.rem < 0) {
@@ -322,15 +299,10 @@ static int aa_row(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t
         else
             t->row = t->end;
     } else if (ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->keep[0] == 0 && ss->keep[1] == 0 &&
-               ((uintptr_t)crow & 1u) == 0) {
-        if (t->left.step != 0)
-            aa_walk(1, ss->func, t, ss, crow, zrow);
-        else if (ss->func == ZL_LESS)
-            aa_walk565(ZL_LESS, t, ss, crow, zrow);
-        else
-            aa_walk565(ss->func, t, ss, crow, zrow);
-    } else {
-        aa_walk(0, ss->func, t, ss, crow, zrow);
+               ((uintptr_t)crow & 1u) == 0 && ss->func == ZL_LESS && t->left.step == 0) {
+        aa_walk565(t, ss, crow, zrow);
+    } else { /* blend() has the RGB565 lanes too */
+        aa_walk(t, ss, crow, zrow);
     }
     if (t->row < t->end)
         t->row++;
