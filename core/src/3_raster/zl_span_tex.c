@@ -67,16 +67,14 @@ static ZL_ALWAYS_INLINE uint16_t blend_add_lanes(uint32_t old, uint32_t add_rb, 
 }
 
 /* A texel's channels as lanes (red, blue) and green, 8 bits each. */
-static ZL_ALWAYS_INLINE void texel_lanes(uint16_t tx, unsigned format, uint32_t *rb, uint32_t *g, unsigned *ta)
+static ZL_ALWAYS_INLINE void texel_lanes(uint16_t tx, unsigned format, uint32_t *rb, uint32_t *g)
 {
     if (format == ZL_TEXEL_RGBA4444) {
         *rb = (((uint32_t)(tx >> 12) << 16) | ((tx >> 4) & 15u)) * 17u;
         *g = ((tx >> 8) & 15u) * 17u;
-        *ta = (tx & 15u) * 17u;
     } else {
         *rb = widen_rb(tx);
         *g = widen_g(tx);
-        *ta = 255u;
     }
 }
 
@@ -98,6 +96,14 @@ static ZL_ALWAYS_INLINE void span_blend565(uint32_t leq, unsigned mode, int zwri
 {
     uint32_t srb, sg, na = 255u - alpha;
     int32_t i;
+    /* the texture's fields in locals: the loop's stores cannot change them */
+    const uint16_t *rtx = rp->texels;
+    const uint32_t rum = rp->umask, rvm = rp->vmask;
+    const unsigned fmt = tex != NULL ? tex->format : 0u;
+    uint8_t alpha_of[16]; /* div255(alpha 17 t) of each RGBA4444 texel alpha t */
+    if (kind != ZL_BLEND_FLAT && fmt == ZL_TEXEL_RGBA4444)
+        for (i = 0; i < 16; i++)
+            alpha_of[i] = (uint8_t)div255(alpha * (unsigned)i * 17u);
     if (mode == ZL_BLEND_ADD) { /* flat: the rounded share */
         srb = ((uint32_t)div255(src[0] * alpha) << 16) | div255(src[2] * alpha);
         sg = div255(src[1] * alpha);
@@ -112,16 +118,15 @@ static ZL_ALWAYS_INLINE void span_blend565(uint32_t leq, unsigned mode, int zwri
             unsigned a = alpha;
             if (kind != ZL_BLEND_FLAT) {
                 uint32_t crb, cg;
-                unsigned ta;
                 /* power-of-two sizes (the caller checked), wrap or clamp per
                  * axis; repeat on both by zl_repeat_pow2, v as its v' */
                 uint16_t tx = kind == ZL_BLEND_REPEAT
-                                  ? texel_repeat(rp->texels, rp->umask, rp->vmask, u, v)
+                                  ? texel_repeat(rtx, rum, rvm, u, v)
                                   : tex->texels[(size_t)texel_wrap32((int32_t)v, tex->height, tex->wrap_t) * tex->stride +
                                                 texel_wrap32((int32_t)u, tex->width, tex->wrap_s)];
-                texel_lanes(tx, tex->format, &crb, &cg, &ta);
-                if (tex->format == ZL_TEXEL_RGBA4444)
-                    a = div255(alpha * ta);
+                texel_lanes(tx, fmt, &crb, &cg);
+                if (fmt == ZL_TEXEL_RGBA4444)
+                    a = alpha_of[tx & 15u];
                 nk = 255u - a;
                 if (mode == ZL_BLEND_ADD) {
                     /* div255 of c a in each lane: at most 65025 + 128 */
