@@ -119,6 +119,14 @@ typedef struct {
 static void aa_weight_init(zl_aa_weight *a, const zl_edge *e)
 {
     int64_t f = (int64_t)e->den - 1 - e->rem, num = f * 255 + e->den / 2, s = (int64_t)e->rstep * 255;
+    if (e->den < (INT32_C(1) << 23)) { /* 0 <= f, rstep < den: 32 bits hold both */
+        uint32_t d = (uint32_t)e->den, n32 = (uint32_t)num, s32 = (uint32_t)s;
+        a->w = (int32_t)(n32 / d);
+        a->r = (int32_t)(n32 - (uint32_t)a->w * d);
+        a->qs = (int32_t)(s32 / d);
+        a->rs = (int32_t)(s32 - (uint32_t)a->qs * d);
+        return;
+    }
     a->w = (int32_t)(num / e->den);
     a->r = (int32_t)(num - (int64_t)a->w * e->den);
     a->qs = (int32_t)(s / e->den);
@@ -201,20 +209,24 @@ typedef struct {
     int64_t z, dz;
 } zl_aa_run;
 
-static ZL_NOINLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k, unsigned flip, uint16_t *crow,
-                                         const uint16_t *zrow, uint32_t width, uint32_t crb, uint32_t cg)
+static ZL_ALWAYS_INLINE void aa_phase565_loop(int exact, unsigned func, zl_aa_run *ru, int32_t k, unsigned flip,
+                                              uint16_t *crow, const uint16_t *zrow, uint32_t width, uint32_t crb,
+                                              uint32_t cg)
 {
     int32_t ax = ru->ax, dir = ru->dir, w = ru->w, wr = ru->wr, qs = ru->qs, rs = ru->rs, den = ru->den;
     int64_t z = ru->z, dz = ru->dz;
-    for (; k > 0; k--) {
+    /* exact: the depth is the high word of z + 1/2 on every column */
+    uint64_t zu = (uint64_t)(z + ((int64_t)1 << 31)), dzu = (uint64_t)dz;
+    int32_t j;
+    for (j = 0; j < k; j++) {
         unsigned wv = (unsigned)w ^ flip;
         if (wv != 0 && (uint32_t)ax < width) {
-            uint32_t d = line_depth(z);
+            uint32_t d = exact ? (uint32_t)(zu >> 32) : line_depth(z + (int64_t)j * dz);
             if (func == ZL_ALWAYS || depth_pass(func, d, zrow[ax]))
                 crow[ax] = blend565(crow[ax], crb, cg, wv);
         }
         ax += dir;
-        z += dz;
+        zu += dzu;
         w += qs;
         wr += rs;
         if (wr >= den) {
@@ -225,7 +237,17 @@ static ZL_NOINLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k, uns
     ru->ax = ax;
     ru->w = w;
     ru->wr = wr;
-    ru->z = z;
+    ru->z = z + (int64_t)k * dz;
+}
+
+static ZL_NOINLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k, unsigned flip, uint16_t *crow,
+                                    const uint16_t *zrow, uint32_t width, uint32_t crb, uint32_t cg)
+{
+    int64_t zb = ru->z + ((int64_t)1 << 31), ze = zb + (int64_t)(k - 1) * ru->dz, top = (int64_t)65536 << 32;
+    if (zb >= 0 && zb < top && ze >= 0 && ze < top)
+        aa_phase565_loop(1, func, ru, k, flip, crow, zrow, width, crb, cg);
+    else
+        aa_phase565_loop(0, func, ru, k, flip, crow, zrow, width, crb, cg);
 }
 
 /* aa_walk for native RGB565 with all channels, depth LESS, and an edge of
