@@ -114,18 +114,6 @@ static void blend_pixel(uint8_t *p, const zl_span_state *ss, unsigned mode, cons
     put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
-/* (a q) / q for the perspective planes: one reciprocal R = 2^44 / Q and a
- * multiplication; Q (q times 16) is clamped to 2^12 .. 2^29 so R fits 32
- * bits and a R fits 64. */
-static inline uint64_t persp_recip(int64_t q)
-{
-    if (q < ((int64_t)1 << 12))
-        q = (int64_t)1 << 12;
-    if (q > ((int64_t)1 << 29))
-        q = (int64_t)1 << 29;
-    return ((uint64_t)1 << 44) / (uint64_t)q;
-}
-
 static inline int64_t persp_apply(int64_t a, uint64_t r)
 {
     return zl_floor_shift64(a * (int64_t)r, 20);
@@ -168,14 +156,16 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
     }
     {
         int64_t u8 = 0, v8 = 0, su = 0, sv = 0;
+        uint64_t r = persp_recip(Q); /* every 1: the previous pixel's, for persp_recip_near */
         for (i = 0; i < n; i++) {
             uint32_t d = depth_of(z);
             if (every == 1) {
-                uint64_t r = persp_recip(Q);
+                r = persp_recip_near(r, Q);
                 u8 = persp_apply(U, r);
                 v8 = persp_apply(V, r);
             } else if ((i & (int32_t)(every - 1)) == 0) {
-                uint64_t r = persp_recip(Q), r2 = persp_recip(Q + (int64_t)every * dQ);
+                uint64_t r2 = persp_recip(Q + (int64_t)every * dQ);
+                r = persp_recip(Q);
                 u8 = persp_apply(U, r);
                 v8 = persp_apply(V, r);
                 su = zl_floor_shift64(persp_apply(U + (int64_t)every * dU, r2) - u8, shift);
@@ -259,6 +249,34 @@ static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow
         V += (int64_t)every * dV;
         u8 = u8n;
         v8 = v8n;
+    }
+}
+
+/* span_tex565's perspective loop exact at every pixel on a zl_repeat_pow2
+ * texture: the reciprocal from the previous pixel's (persp_recip_near),
+ * the texel through the masks at 8 fraction bits (span_persp_repeat). */
+static ZL_NOINLINE void span_persp1_repeat(uint32_t leq, const zl_repeat_pow2 *rp, uint16_t *crow, uint16_t *zrow,
+                                           int32_t n, uint32_t z, uint32_t dz, int64_t U, int64_t dU, int64_t V,
+                                           int64_t dV, int64_t Q, int64_t dQ)
+{
+    const uint16_t *tx = rp->texels;
+    const uint32_t um = rp->umask >> 4, vm = rp->vmask >> 4;
+    const unsigned s = rp->s;
+    uint64_t r = persp_recip(Q);
+    int32_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t d = depth_of(z);
+        r = persp_recip_near(r, Q);
+        if (pass_lt_leq(d, zrow[i], leq)) {
+            /* conversion to unsigned is modulo 2^32: the low bits the masks read */
+            uint32_t u = (uint32_t)(uint64_t)persp_apply(U, r), v = (uint32_t)(uint64_t)persp_apply(V, r) << s;
+            zrow[i] = (uint16_t)d;
+            crow[i] = tx[((u & um) + (v & vm)) >> 8];
+        }
+        z += dz;
+        Q += dQ;
+        U += dU;
+        V += dV;
     }
 }
 
@@ -351,6 +369,10 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
          * unlit, all channels), depth LESS or LEQUAL with writes; the same
          * values as the general loop below, computed with fewer steps. */
         zl_repeat_pow2 rp;
+        if (persp && every == 1 && repeat_pow2_of(tex, &rp)) {
+            span_persp1_repeat(func == ZL_LEQUAL, &rp, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+            return;
+        }
         if (persp && every > 1 && repeat_pow2_of(tex, &rp)) {
             span_persp_repeat_any(func, &rp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
                                   dQ);

@@ -77,6 +77,39 @@ static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsign
     return (uint32_t)i & (uint32_t)(size - 1u);
 }
 
+/* (a q) / q for the perspective planes: one reciprocal R = 2^44 / Q and a
+ * multiplication; Q (q times 16) is clamped to 2^12 .. 2^29 so R fits 32
+ * bits and a R fits 64. */
+static inline uint64_t persp_recip(int64_t q)
+{
+    if (q < ((int64_t)1 << 12))
+        q = (int64_t)1 << 12;
+    if (q > ((int64_t)1 << 29))
+        q = (int64_t)1 << 29;
+    return ((uint64_t)1 << 44) / (uint64_t)q;
+}
+
+/* persp_recip(q) from r = persp_recip(q0) of a nearby q0 (the previous
+ * pixel's): with q' = q clamped as persp_recip clamps it and the remainder
+ * e = 2^44 - r q' (r <= 2^32, q' <= 2^29: the product fits 63 bits),
+ * floor(2^44 / q') = r + floor(e / q'). No division when 0 <= e < q' (r
+ * is already the quotient), a 32-bit one when |e| < 2^31, else the full
+ * one: exact in every case. */
+static ZL_ALWAYS_INLINE uint64_t persp_recip_near(uint64_t r, int64_t q)
+{
+    const int64_t qc = q < ((int64_t)1 << 12) ? ((int64_t)1 << 12) : (q > ((int64_t)1 << 29) ? ((int64_t)1 << 29) : q);
+    int64_t e = ((int64_t)1 << 44) - (int64_t)(r * (uint64_t)qc);
+    if (e >= 0 && e < qc)
+        return r;
+    if (e > -((int64_t)1 << 31) && e < ((int64_t)1 << 31)) {
+        int32_t e32 = (int32_t)e, q32 = (int32_t)qc, d = e32 / q32;
+        if (d * q32 > e32) /* C truncates: floor for a negative e */
+            d--;
+        return (uint64_t)((int64_t)r + d);
+    }
+    return ((uint64_t)1 << 44) / (uint64_t)qc;
+}
+
 /* The depth test of the LESS / LEQUAL loops below and in zl_rows_styled.c:
  * d < stored (LESS) or d <= stored (LEQUAL) as d < stored + leq, leq 1 for
  * LEQUAL (stored + 1 is at most 65536): one compare either way, so one
