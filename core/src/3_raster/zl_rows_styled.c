@@ -209,7 +209,8 @@ static ZL_ALWAYS_INLINE void span_tex565_repeat(uint32_t leq, int clamp, const u
 /* span_tex565's perspective loop exact every `every` (2^shift) pixels on a
  * zl_repeat_pow2 texture: one reciprocal a segment (its end's, which is
  * the next segment's start: the planes are stepped by exact adds, so
- * every start is the value the general loop computes there), and between
+ * every start is the value the general loop computes there; stepped from
+ * the start's by persp_recip_near, exact), and between
  * the exact points the 1/256-texel coordinates stepped as 32-bit words,
  * read through the masks moved to 8 fraction bits (zl_repeat_pow2, the
  * same argument: the masks keep bits that wrapping adds keep). */
@@ -226,7 +227,7 @@ static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow
     int64_t u8 = persp_apply(U, r), v8 = persp_apply(V, r);
     while (zrow != zend) {
         int32_t m = zend - zrow < (int32_t)every ? (int32_t)(zend - zrow) : (int32_t)every;
-        uint64_t r2 = persp_recip(Q + (int64_t)every * dQ);
+        uint64_t r2 = persp_recip_near(r, Q + (int64_t)every * dQ); /* from the start's */
         int64_t u8n = persp_apply(U + (int64_t)every * dU, r2), v8n = persp_apply(V + (int64_t)every * dV, r2);
         /* conversion to unsigned is modulo 2^32: the low bits the masks read */
         uint32_t u = (uint32_t)(uint64_t)u8, v = (uint32_t)(uint64_t)v8 << s;
@@ -249,6 +250,7 @@ static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow
         V += (int64_t)every * dV;
         u8 = u8n;
         v8 = v8n;
+        r = r2;
     }
 }
 
