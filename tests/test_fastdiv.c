@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "../core/src/1_base/zl_internal.h"
+#include "../core/src/3_raster/zl_span_tex.h"
 #include "unity.h"
 
 void setUp(void) {}
@@ -819,6 +820,41 @@ static void test_mul_s32_split(void)
     }
 }
 
+/* The perspective reciprocal stepped from a nearby one (zl_span_tex.h,
+ * persp_recip_near) against 2^44 / q by a plain 64-bit division, q clamped
+ * to 2^12 .. 2^29 as the rule says: neighbours at every distance (the
+ * remainder 0 .. q, within 31 bits either sign, and beyond), and q outside
+ * the clamp range. */
+static void test_persp_recip_near(void)
+{
+    int k;
+    for (k = 0; k < 200000; k++) {
+        int64_t q0 = (int64_t)(rnd32() % (1u << 30)), q, qc, dq;
+        uint64_t want, r0;
+        switch (k % 4) {
+        case 0:
+            dq = (int64_t)(rnd32() % 17u) - 8;
+            break;
+        case 1:
+            dq = (int64_t)(rnd32() % 4097u) - 2048;
+            break;
+        case 2:
+            dq = (int64_t)(rnd32() % (1u << 20)) - (1 << 19);
+            break;
+        default:
+            dq = (int64_t)(rnd32() % (1u << 30)) - (1 << 29);
+            break;
+        }
+        if (k % 97 == 0)
+            q0 = (int64_t)(rnd32() % 5000u);
+        q = q0 + dq;
+        qc = q < 4096 ? 4096 : (q > (1 << 29) ? (1 << 29) : q);
+        want = ((uint64_t)1 << 44) / (uint64_t)qc;
+        r0 = persp_recip(q0);
+        TEST_ASSERT_EQUAL_UINT64(want, persp_recip_near(r0, q));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -837,5 +873,6 @@ int main(void)
     RUN_TEST(test_isqrt32_squares);
     RUN_TEST(test_div255_small_all);
     RUN_TEST(test_mul_s32_split);
+    RUN_TEST(test_persp_recip_near);
     return UNITY_END();
 }

@@ -450,9 +450,50 @@ static void test_points(void)
     TEST_ASSERT_EQUAL_UINT32(0, read_mask(got));
 }
 
-/* Antialiased lines: white on black, so each pixel holds its weight,
+/* The weights an antialiased segment a-b gives each pixel (0 off it):
  * round(255 f) below the ideal line and 255 minus that above, f the exact
  * fraction of the minor coordinate (reference in exact integers). */
+static void aa_expected(const zl_fixed *a, const zl_fixed *b, uint8_t *expect)
+{
+    int64_t X0 = pixel_of(a[0]), Y0 = pixel_of(a[1]), X1 = pixel_of(b[0]), Y1 = pixel_of(b[1]);
+    int64_t dx = X1 - X0, dy = Y1 - Y0, k;
+    int xmajor = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy), x;
+    memset(expect, 0, W * H);
+    for (k = xmajor ? (X0 < X1 ? X0 : X1) : (Y0 < Y1 ? Y0 : Y1); k <= (xmajor ? (X0 < X1 ? X1 : X0) : (Y0 < Y1 ? Y1 : Y0)); k++) {
+        /* n = base + num / den exactly, den > 0 */
+        int64_t num = xmajor ? (k - X0) * dy : (k - Y0) * dx, den = xmajor ? dx : dy, fl, f, wl;
+        int64_t base = xmajor ? Y0 : X0;
+        if (den < 0) {
+            num = -num;
+            den = -den;
+        }
+        if (den == 0) {
+            num = 0;
+            den = 1;
+        }
+        fl = floor_div(num, den);
+        f = num - fl * den;             /* fraction f / den */
+        wl = (f * 255 + den / 2) / den; /* weight of floor + 1 */
+        for (x = 0; x < 2; x++) {
+            int64_t m = base + fl + x, w = x ? wl : 255 - wl;
+            int64_t px = xmajor ? k : m, py = xmajor ? m : k;
+            if (px >= 0 && px < W && py >= 0 && py < H)
+                expect[py * W + px] = (uint8_t)w;
+        }
+    }
+}
+
+static void random_segment(int i, zl_fixed *a, zl_fixed *b)
+{
+    int32_t reach = i % 3 == 0 ? 400 : 30;
+    a[0] = rand_range(-reach * 16, (W + reach) * 16) * 4096;
+    a[1] = rand_range(-reach * 16, (H + reach) * 16) * 4096;
+    b[0] = rand_range(-reach * 16, (W + reach) * 16) * 4096;
+    b[1] = rand_range(-reach * 16, (H + reach) * 16) * 4096;
+}
+
+/* Antialiased lines: white on black, so each pixel holds its weight
+ * (aa_expected). */
 static void test_antialiased_lines_against_the_weights(void)
 {
     static uint8_t expect[W * H];
@@ -464,43 +505,9 @@ static void test_antialiased_lines_against_the_weights(void)
     ctx.style.line_aa = 1;
     for (i = 0; i < 1500; i++) {
         zl_fixed a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
-        int32_t reach = i % 3 == 0 ? 400 : 30;
-        int64_t X0, Y0, X1, Y1, dx, dy, k;
-        int xmajor, x, y;
-        a[0] = rand_range(-reach * 16, (W + reach) * 16) * 4096;
-        a[1] = rand_range(-reach * 16, (H + reach) * 16) * 4096;
-        b[0] = rand_range(-reach * 16, (W + reach) * 16) * 4096;
-        b[1] = rand_range(-reach * 16, (H + reach) * 16) * 4096;
-        X0 = pixel_of(a[0]);
-        Y0 = pixel_of(a[1]);
-        X1 = pixel_of(b[0]);
-        Y1 = pixel_of(b[1]);
-        dx = X1 - X0;
-        dy = Y1 - Y0;
-        xmajor = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
-        memset(expect, 0, sizeof expect);
-        for (k = xmajor ? (X0 < X1 ? X0 : X1) : (Y0 < Y1 ? Y0 : Y1); k <= (xmajor ? (X0 < X1 ? X1 : X0) : (Y0 < Y1 ? Y1 : Y0)); k++) {
-            /* n = base + num / den exactly, den > 0 */
-            int64_t num = xmajor ? (k - X0) * dy : (k - Y0) * dx, den = xmajor ? dx : dy, fl, f, wl;
-            int64_t base = xmajor ? Y0 : X0;
-            if (den < 0) {
-                num = -num;
-                den = -den;
-            }
-            if (den == 0) {
-                num = 0;
-                den = 1;
-            }
-            fl = floor_div(num, den);
-            f = num - fl * den;                   /* fraction f / den */
-            wl = (f * 255 + den / 2) / den;       /* weight of floor + 1 */
-            for (x = 0; x < 2; x++) {
-                int64_t m = base + fl + x, w = x ? wl : 255 - wl;
-                int64_t px = xmajor ? k : m, py = xmajor ? m : k;
-                if (px >= 0 && px < W && py >= 0 && py < H)
-                    expect[py * W + px] = (uint8_t)w;
-            }
-        }
+        int x, y;
+        random_segment(i, a, b);
+        aa_expected(a, b, expect);
         clear();
         draw_segment(a, b, ZL_LINE_BRESENHAM);
         for (y = 0; y < H; y++)
@@ -513,6 +520,70 @@ static void test_antialiased_lines_against_the_weights(void)
                 TEST_ASSERT_EQUAL_UINT8(expect[y * W + x], color[(y * W + x) * 3 + 1]);
     }
     ctx.style.line_aa = 0;
+}
+
+/* A channel of the coverage blend (zline.h, LINES): old and new 8-bit
+ * values, weight w, by a plain division. */
+static unsigned aa_mix(unsigned old, unsigned c, unsigned w)
+{
+    return (old * (255u - w) + c * w + 127u) / 255u;
+}
+
+/* Antialiased lines into RGB565 (the loop of that format): a coloured line
+ * over a coloured background (random colours), each pixel the background's 8-bit widening
+ * blended by its weight (aa_expected), then packed; depth tests ALWAYS,
+ * LESS passing everywhere, and LESS failing everywhere (nothing drawn). */
+static void test_antialiased_lines_rgb565(void)
+{
+    static uint16_t c565[W * H];
+    static uint8_t expect[W * H];
+    unsigned bg[3], fg[3];
+    zl_rgb bgc;
+    zl_target t;
+    int i;
+    memset(&t, 0, sizeof t);
+    t.color = c565;
+    t.color_stride = W * 2;
+    t.depth = depth;
+    t.depth_stride = W * 2;
+    t.width = W;
+    t.height = H;
+    t.format = ZL_FORMAT_RGB565;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
+    ctx.style.line_aa = 1;
+    for (i = 0; i < 1500; i++) {
+        zl_fixed a[3] = {0, 0, ZL_FX_HALF}, b[3] = {0, 0, ZL_FX_HALF};
+        int mode = i % 3, k;
+        for (k = 0; k < 3; k++) { /* random colours: every rounding case over the run */
+            bg[k] = (unsigned)rand_range(0, 255);
+            fg[k] = (unsigned)rand_range(0, 255);
+        }
+        bgc.r = (uint8_t)bg[0];
+        bgc.g = (uint8_t)bg[1];
+        bgc.b = (uint8_t)bg[2];
+        ctx.state.color.r = (uint8_t)fg[0];
+        ctx.state.color.g = (uint8_t)fg[1];
+        ctx.state.color.b = (uint8_t)fg[2];
+        random_segment(i, a, b);
+        aa_expected(a, b, expect);
+        ctx.state.depth_test = (uint8_t)(mode != 0);
+        ctx.state.depth_func = ZL_LESS;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bgc, mode == 2 ? 0 : 65535));
+        draw_segment(i & 1 ? a : b, i & 1 ? b : a, ZL_LINE_BRESENHAM);
+        for (k = 0; k < W * H; k++) {
+            uint16_t old = c565[k];
+            /* the clear colour as stored (5, 6, 5 bits), widened back by bit replication */
+            unsigned w = mode == 2 ? 0u : expect[k], o[3], r5 = bg[0] >> 3, g6 = bg[1] >> 2, b5 = bg[2] >> 3;
+            uint16_t want565;
+            o[0] = aa_mix((r5 << 3) | (r5 >> 2), fg[0], w);
+            o[1] = aa_mix((g6 << 2) | (g6 >> 4), fg[1], w);
+            o[2] = aa_mix((b5 << 3) | (b5 >> 2), fg[2], w);
+            want565 = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
+            TEST_ASSERT_EQUAL_HEX16(want565, old);
+        }
+    }
+    ctx.style.line_aa = 0;
+    make_target();
 }
 
 /* The RGB565 loop (LESS with writes, all channels) covers the same pixels
@@ -558,9 +629,12 @@ static void test_rgb565_loop_matches_the_rule(void)
         l.count = 2;
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c, black, 65535));
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_lines(&c, &l, NULL));
+        /* the pixels against the rule's own reference too (the RGB565 runs) */
+        reference_mask(pixel_of(a[0]), pixel_of(a[1]), pixel_of(b[0]), pixel_of(b[1]), 0, want);
         for (k = 0; k < W * H; k++) {
             TEST_ASSERT_EQUAL_UINT16(depth[k], z565[k]);
             TEST_ASSERT_EQUAL_INT(color[k * 3] != 0, c565[k] != 0);
+            TEST_ASSERT_EQUAL_INT(want[k], c565[k] != 0);
         }
     }
 }
@@ -600,6 +674,7 @@ int main(void)
     RUN_TEST(test_strip_and_loop_cover_their_segments);
     RUN_TEST(test_points);
     RUN_TEST(test_antialiased_lines_against_the_weights);
+    RUN_TEST(test_antialiased_lines_rgb565);
     RUN_TEST(test_rgb565_loop_matches_the_rule);
     RUN_TEST(test_invalid_arguments);
     return UNITY_END();

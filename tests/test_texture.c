@@ -313,6 +313,59 @@ static void test_wrap_and_clamp(void)
         }
 }
 
+/* Repeat on power-of-two textures over long spans, by hand: the whole
+ * target, texel coordinates (in texels) cu = -37 + 3/4 x and
+ * cv = 5 - 5/4 y, so the steps are fractions, both signs, and the texel
+ * a pixel centre shows is floor(c) modulo the size, never at a tie (the
+ * centre's fraction is 1/8, 3/8, 5/8 or 7/8). A 16 x 8 texture in rows of
+ * 32 texels and a 32 x 32 one, affine and perspective mapping (exact,
+ * and exact every 8 and 16 pixels: in pixel space w is 1, and the steps,
+ * whole 1/256 texels, are exact), depth tests LESS and LEQUAL. */
+static void test_repeat_pow2_long_spans(void)
+{
+    static const zl_fixed quad[] = {0, 0, 0, ZL_FX_INT(W), 0, 0, ZL_FX_INT(W), ZL_FX_INT(H), 0, 0, ZL_FX_INT(H), 0};
+    static const uint16_t idx[] = {0, 1, 2, 0, 2, 3};
+    static const uint16_t sizes[2][2] = {{16, 8}, {32, 32}};
+    zl_fixed uv[8];
+    zl_mesh m = {quad, idx, NULL, NULL, 4, 2};
+    zl_texture tex;
+    int x, y, k, mapping, func;
+    make_texture();
+    make_target();
+    for (k = 0; k < 2; k++) {
+        int tw = sizes[k][0], th = sizes[k][1];
+        memset(&tex, 0, sizeof tex);
+        tex.texels = texels;
+        tex.width = (uint16_t)tw;
+        tex.height = (uint16_t)th;
+        tex.stride = TS;
+        /* s = cu / tw, t = cv / th at the corners, exact in Q16 */
+        uv[0] = uv[6] = (zl_fixed)(-37 * 65536 / tw);
+        uv[2] = uv[4] = (zl_fixed)((-37 + 3 * W / 4) * 65536 / tw);
+        uv[1] = uv[3] = (zl_fixed)(5 * 65536 / th);
+        uv[5] = uv[7] = (zl_fixed)((5 - 5 * H / 4) * 65536 / th);
+        ctx.style.texture = &tex;
+        ctx.style.texcoords = uv;
+        for (mapping = 0; mapping < 4; mapping++) /* affine, perspective exact, every 8, every 16 */
+            for (func = 0; func < 2; func++) {
+                ctx.style.tex_mapping = (uint8_t)(mapping != 0);
+                ctx.style.tex_every = (uint8_t)(mapping < 2 ? 0 : 4 << mapping);
+                ctx.state.depth_func = (uint8_t)(func ? ZL_LEQUAL : ZL_LESS);
+                clear();
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+                for (y = 0; y < H; y++)
+                    for (x = 0; x < W; x++) {
+                        /* 8 c at the centre: -296 + 6 x + 3 and 40 - 10 y - 5 */
+                        int i = (int)floor_d((-296 + 6 * x + 3) / 8.0) & (tw - 1);
+                        int j = (int)floor_d((40 - 10 * y - 5) / 8.0) & (th - 1);
+                        TEST_ASSERT_EQUAL_HEX16((uint16_t)((i << 11) | (j << 5) | 31), color[y * W + x]);
+                    }
+            }
+    }
+    ctx.state.depth_func = ZL_LESS;
+    ctx.style.tex_every = 0;
+}
+
 static void test_lighting_modulates_and_invalid_textures(void)
 {
     zl_texture tex;
@@ -469,6 +522,7 @@ int main(void)
     RUN_TEST(test_floor_affine_is_visibly_different);
     RUN_TEST(test_floor_exact_every_16);
     RUN_TEST(test_wrap_and_clamp);
+    RUN_TEST(test_repeat_pow2_long_spans);
     RUN_TEST(test_fast_and_general_loops_agree);
     RUN_TEST(test_perspective_gouraud);
     RUN_TEST(test_lighting_modulates_and_invalid_textures);

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "zl_raster.h"
+#include "zl_span_tex.h"
 
 /* ------------------------------------------------- textures, perspective */
 
@@ -29,18 +30,6 @@ static inline uint32_t texel_index_any(int64_t c8, uint16_t size, unsigned wrap)
         return texel_index(c8, size, wrap);
     i = zl_floor_shift64(c8, 8) % (int64_t)size;
     return (uint32_t)(i < 0 ? i + size : i);
-}
-
-static int is_pow2(uint16_t n)
-{
-    return (n & (n - 1u)) == 0;
-}
-
-/* round(x / 255) for 0 <= x <= 255 * 255, without a division. */
-static inline unsigned div255(unsigned x)
-{
-    x += 128u;
-    return (x + (x >> 8)) >> 8;
 }
 
 /* A texel as 8-bit r, g, b and alpha (255 for RGB565). */
@@ -125,18 +114,6 @@ static void blend_pixel(uint8_t *p, const zl_span_state *ss, unsigned mode, cons
     put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
-/* (a q) / q for the perspective planes: one reciprocal R = 2^44 / Q and a
- * multiplication; Q (q times 16) is clamped to 2^12 .. 2^29 so R fits 32
- * bits and a R fits 64. */
-static inline uint64_t persp_recip(int64_t q)
-{
-    if (q < ((int64_t)1 << 12))
-        q = (int64_t)1 << 12;
-    if (q > ((int64_t)1 << 29))
-        q = (int64_t)1 << 29;
-    return ((uint64_t)1 << 44) / (uint64_t)q;
-}
-
 static inline int64_t persp_apply(int64_t a, uint64_t r)
 {
     return zl_floor_shift64(a * (int64_t)r, 20);
@@ -179,14 +156,16 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
     }
     {
         int64_t u8 = 0, v8 = 0, su = 0, sv = 0;
+        uint64_t r = persp_recip(Q); /* every 1: the previous pixel's, for persp_recip_near */
         for (i = 0; i < n; i++) {
             uint32_t d = depth_of(z);
             if (every == 1) {
-                uint64_t r = persp_recip(Q);
+                r = persp_recip_near(r, Q);
                 u8 = persp_apply(U, r);
                 v8 = persp_apply(V, r);
             } else if ((i & (int32_t)(every - 1)) == 0) {
-                uint64_t r = persp_recip(Q), r2 = persp_recip(Q + (int64_t)every * dQ);
+                uint64_t r2 = persp_recip(Q + (int64_t)every * dQ);
+                r = persp_recip(Q);
                 u8 = persp_apply(U, r);
                 v8 = persp_apply(V, r);
                 su = zl_floor_shift64(persp_apply(U + (int64_t)every * dU, r2) - u8, shift);
@@ -206,146 +185,127 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
     }
 }
 
-/* texel_index for an affine Q12 coordinate of 32 bits (power-of-two size). */
-static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsigned wrap)
+/* span_tex565's affine loop on a zl_repeat_pow2 texture, v as v' (above);
+ * depth z shifted alone when `clamp` is 0 (the caller checked the range). */
+static ZL_ALWAYS_INLINE void span_tex565_repeat(uint32_t leq, int clamp, const uint16_t *texels, uint32_t umask,
+                                                uint32_t vmask, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                                uint32_t dz, uint32_t u, uint32_t du, uint32_t v, uint32_t dv)
 {
-    int32_t i = zl_floor_shift32(c12, 12);
-    if (wrap == ZL_WRAP_CLAMP)
-        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
-    return (uint32_t)i & (uint32_t)(size - 1u);
-}
-
-/*
- * Blended spans in their own loop (the common case of BLENDING): native
- * RGB565, all channels, depth LESS or LEQUAL, a flat colour (src, already
- * lit) or an unlit affine texture of power-of-two size; exactly the values
- * of the general loop (blend_pixel), with the constant parts hoisted.
- */
-static ZL_ALWAYS_INLINE void span_blend565(unsigned func, unsigned mode, int zwrite, const zl_texture *tex,
-                                           unsigned alpha, const unsigned *src, uint16_t *crow, uint16_t *zrow,
-                                           int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
-                                           int32_t dv)
-{
-    unsigned sa[3], k, na = 255u - alpha;
-    int32_t i;
-    for (k = 0; k < 3; k++) /* flat: src a, or for ADD its rounded share */
-        sa[k] = mode == ZL_BLEND_ADD ? div255(src[k] * alpha) : src[k] * alpha;
-    for (i = 0; i < n; i++) {
-        uint32_t d = depth_of(z);
-        if (depth_pass(func, d, zrow[i])) {
-            unsigned c[3], a = alpha, old = crow[i], o[3];
-            const unsigned *add = sa;
-            unsigned mul[3];
-            if (tex != NULL) {
-                unsigned ta;
-                /* power-of-two sizes (the caller checked), wrap or clamp per axis */
-                uint16_t tx = tex->texels[(size_t)texel_wrap32(v, tex->height, tex->wrap_t) * tex->stride +
-                                          texel_wrap32(u, tex->width, tex->wrap_s)];
-                unpack_texel(tx, tex->format, &c[0], &c[1], &c[2], &ta);
-                if (tex->format == ZL_TEXEL_RGBA4444)
-                    a = div255(alpha * ta);
-                for (k = 0; k < 3; k++)
-                    mul[k] = mode == ZL_BLEND_ADD ? div255(c[k] * a) : c[k] * a;
-                add = mul;
-            }
-            if (a != 0) {
-                unsigned r5 = old >> 11, g6 = (old >> 5) & 63u, b5 = old & 31u, nk = tex != NULL ? 255u - a : na;
-                o[0] = (r5 << 3) | (r5 >> 2);
-                o[1] = (g6 << 2) | (g6 >> 4);
-                o[2] = (b5 << 3) | (b5 >> 2);
-                for (k = 0; k < 3; k++) {
-                    if (mode == ZL_BLEND_ADD) {
-                        unsigned t = o[k] + add[k];
-                        o[k] = t > 255u ? 255u : t;
-                    } else {
-                        o[k] = div255(add[k] + o[k] * nk);
-                    }
-                }
-                if (zwrite)
-                    zrow[i] = (uint16_t)d;
-                crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
-            }
+    const uint16_t *zend = zrow + n;
+    while (zrow != zend) {
+        uint32_t d = clamp ? depth_of(z) : z >> 14;
+        if (pass_lt_leq(d, *zrow, leq)) {
+            *zrow = (uint16_t)d;
+            *crow = texel_repeat(texels, umask, vmask, u, v);
         }
+        zrow++;
+        crow++;
         z += dz;
         u += du;
         v += dv;
     }
 }
 
-/* One bilinear tap index of a power-of-two axis, from its floor index. */
-static ZL_ALWAYS_INLINE uint32_t tap_pow2(int32_t i, uint16_t size, unsigned wrap)
+/* span_tex565's perspective loop exact every `every` (2^shift) pixels on a
+ * zl_repeat_pow2 texture: one reciprocal a segment (its end's, which is
+ * the next segment's start: the planes are stepped by exact adds, so
+ * every start is the value the general loop computes there; stepped from
+ * the start's by persp_recip_near, exact), and between
+ * the exact points the 1/256-texel coordinates stepped as 32-bit words,
+ * read through the masks moved to 8 fraction bits (zl_repeat_pow2, the
+ * same argument: the masks keep bits that wrapping adds keep). */
+static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow2 *rp, unsigned every,
+                                               unsigned shift, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                               uint32_t dz, int64_t U, int64_t dU, int64_t V, int64_t dV, int64_t Q,
+                                               int64_t dQ)
 {
-    if (wrap == ZL_WRAP_CLAMP)
-        return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
-    return (uint32_t)i & (uint32_t)(size - 1u);
+    const uint16_t *tx = rp->texels;
+    const uint32_t um = rp->umask >> 4, vm = rp->vmask >> 4;
+    const unsigned s = rp->s;
+    const uint16_t *zend = zrow + n;
+    uint64_t r = persp_recip(Q);
+    int64_t u8 = persp_apply(U, r), v8 = persp_apply(V, r);
+    while (zrow != zend) {
+        int32_t m = zend - zrow < (int32_t)every ? (int32_t)(zend - zrow) : (int32_t)every;
+        uint64_t r2 = persp_recip_near(r, Q + (int64_t)every * dQ); /* from the start's */
+        int64_t u8n = persp_apply(U + (int64_t)every * dU, r2), v8n = persp_apply(V + (int64_t)every * dV, r2);
+        /* conversion to unsigned is modulo 2^32: the low bits the masks read */
+        uint32_t u = (uint32_t)(uint64_t)u8, v = (uint32_t)(uint64_t)v8 << s;
+        uint32_t su = (uint32_t)(uint64_t)zl_floor_shift64(u8n - u8, shift);
+        uint32_t sv = (uint32_t)(uint64_t)zl_floor_shift64(v8n - v8, shift) << s;
+        for (; m > 0; m--) {
+            uint32_t d = depth_of(z);
+            if (pass_lt_leq(d, *zrow, leq)) {
+                *zrow = (uint16_t)d;
+                *crow = tx[((u & um) + (v & vm)) >> 8];
+            }
+            zrow++;
+            crow++;
+            z += dz;
+            u += su;
+            v += sv;
+        }
+        Q += (int64_t)every * dQ;
+        U += (int64_t)every * dU;
+        V += (int64_t)every * dV;
+        u8 = u8n;
+        v8 = v8n;
+        r = r2;
+    }
 }
 
-/* A 565 texel's channel widened to 8 bits (shift, mask, replicate). */
-static ZL_ALWAYS_INLINE unsigned ch565(unsigned t, unsigned k)
+/* span_tex565's perspective loop exact at every pixel on a zl_repeat_pow2
+ * texture: the reciprocal from the previous pixel's (persp_recip_near),
+ * the texel through the masks at 8 fraction bits (span_persp_repeat). */
+static ZL_NOINLINE void span_persp1_repeat(uint32_t leq, const zl_repeat_pow2 *rp, uint16_t *crow, uint16_t *zrow,
+                                           int32_t n, uint32_t z, uint32_t dz, int64_t U, int64_t dU, int64_t V,
+                                           int64_t dV, int64_t Q, int64_t dQ)
 {
-    unsigned c;
-    if (k == 0) {
-        c = t >> 11;
-        return (c << 3) | (c >> 2);
-    }
-    if (k == 1) {
-        c = (t >> 5) & 63u;
-        return (c << 2) | (c >> 4);
-    }
-    c = t & 31u;
-    return (c << 3) | (c >> 2);
-}
-
-/*
- * Bilinear spans in their own loop: an unlit affine RGB565 texture of
- * power-of-two size, unblended, into native RGB565 with all channels and
- * depth LESS or LEQUAL with writes; exactly tex_sample's values.
- */
-static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *tex, uint16_t *crow, uint16_t *zrow,
-                                              int32_t n, uint32_t z, uint32_t dz, int32_t u, int32_t du, int32_t v,
-                                              int32_t dv)
-{
+    const uint16_t *tx = rp->texels;
+    const uint32_t um = rp->umask >> 4, vm = rp->vmask >> 4;
+    const unsigned s = rp->s;
+    uint64_t r = persp_recip(Q);
     int32_t i;
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
-        if (depth_pass(func, d, zrow[i])) {
-            int32_t pu = zl_floor_shift32(u, 4) - 128, pv = zl_floor_shift32(v, 4) - 128;
-            unsigned fx = (uint32_t)pu & 255u, fy = (uint32_t)pv & 255u, k, o[3];
-            int32_t iu = zl_floor_shift32(pu, 8), iv = zl_floor_shift32(pv, 8);
-            uint32_t x0 = tap_pow2(iu, tex->width, tex->wrap_s), x1 = tap_pow2(iu + 1, tex->width, tex->wrap_s);
-            const uint16_t *r0 = tex->texels + (size_t)tap_pow2(iv, tex->height, tex->wrap_t) * tex->stride;
-            const uint16_t *r1 = tex->texels + (size_t)tap_pow2(iv + 1, tex->height, tex->wrap_t) * tex->stride;
-            unsigned t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
-            for (k = 0; k < 3; k++) {
-                unsigned top = ch565(t00, k) * (256u - fx) + ch565(t10, k) * fx;
-                unsigned bottom = ch565(t01, k) * (256u - fx) + ch565(t11, k) * fx;
-                o[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
-            }
+        r = persp_recip_near(r, Q);
+        if (pass_lt_leq(d, zrow[i], leq)) {
+            /* conversion to unsigned is modulo 2^32: the low bits the masks read */
+            uint32_t u = (uint32_t)(uint64_t)persp_apply(U, r), v = (uint32_t)(uint64_t)persp_apply(V, r) << s;
             zrow[i] = (uint16_t)d;
-            crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));
+            crow[i] = tx[((u & um) + (v & vm)) >> 8];
         }
         z += dz;
-        u += du;
-        v += dv;
+        Q += dQ;
+        U += dU;
+        V += dV;
     }
 }
 
-/* span_blend565 with the depth function and blend mode as constants. */
-static void span_blend565_any(unsigned func, unsigned mode, int zwrite, const zl_texture *tex, unsigned alpha,
-                              const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
-                              int32_t u, int32_t du, int32_t v, int32_t dv)
+static ZL_NOINLINE void span_persp_repeat_any(unsigned func, const zl_repeat_pow2 *rp, unsigned every,
+                                              unsigned shift, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
+                                              uint32_t dz, int64_t U, int64_t dU, int64_t V, int64_t dV, int64_t Q,
+                                              int64_t dQ)
 {
-    if (func == ZL_LESS) {
-        if (mode == ZL_BLEND_ALPHA)
-            span_blend565(ZL_LESS, ZL_BLEND_ALPHA, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
-        else
-            span_blend565(ZL_LESS, ZL_BLEND_ADD, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
-    } else {
-        if (mode == ZL_BLEND_ALPHA)
-            span_blend565(ZL_LEQUAL, ZL_BLEND_ALPHA, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
-        else
-            span_blend565(ZL_LEQUAL, ZL_BLEND_ADD, zwrite, tex, alpha, src, crow, zrow, n, z, dz, u, du, v, dv);
-    }
+    span_persp_repeat(func == ZL_LEQUAL, rp, every, shift, crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+}
+
+static ZL_NOINLINE void span_tex565_repeat_any(unsigned func, const zl_repeat_pow2 *rp, uint16_t *crow,
+                                               uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz, int64_t U,
+                                               int64_t dU, int64_t V, int64_t dV)
+{
+    /* the low 32 bits of the 64-bit planes: conversion to unsigned is modulo 2^32 */
+    uint32_t u = (uint32_t)(uint64_t)U, du = (uint32_t)(uint64_t)dU, v = (uint32_t)(uint64_t)V << rp->s,
+             dv = (uint32_t)(uint64_t)dV << rp->s;
+    const uint16_t *tx = rp->texels;
+    uint32_t um = rp->umask, vm = rp->vmask;
+    int exact = depth_exact(z, dz, n);
+    /* constants for the common case (LESS, z exact): its loop has no add
+     * for the test (leq 0) and no clamp */
+    if (exact && func == ZL_LESS)
+        span_tex565_repeat(0, 0, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
+    else
+        span_tex565_repeat(func == ZL_LEQUAL, 1, tx, um, vm, crow, zrow, n, z, dz, u, du, v, dv);
 }
 
 static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texplanes *tp, const zl_style *sty,
@@ -410,6 +370,20 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         /* The common case in its own loop: the texel is the pixel (RGB565,
          * unlit, all channels), depth LESS or LEQUAL with writes; the same
          * values as the general loop below, computed with fewer steps. */
+        zl_repeat_pow2 rp;
+        if (persp && every == 1 && repeat_pow2_of(tex, &rp)) {
+            span_persp1_repeat(func == ZL_LEQUAL, &rp, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
+            return;
+        }
+        if (persp && every > 1 && repeat_pow2_of(tex, &rp)) {
+            span_persp_repeat_any(func, &rp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q,
+                                  dQ);
+            return;
+        }
+        if (!persp && repeat_pow2_of(tex, &rp)) {
+            span_tex565_repeat_any(func, &rp, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV);
+            return;
+        }
         if (func == ZL_LESS)
             span_tex565(ZL_LESS, tex, persp, every, shift, (uint16_t *)(void *)crow, zrow, n, z, dz, U, dU, V, dV, Q, dQ);
         else
@@ -422,12 +396,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
         ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) && affine_fits(U, dU, n) &&
         affine_fits(V, dV, n)) {
-        if (func == ZL_LESS)
-            span_bilinear565(ZL_LESS, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
-                             (int32_t)V, (int32_t)dV);
-        else
-            span_bilinear565(ZL_LEQUAL, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU,
-                             (int32_t)V, (int32_t)dV);
+        zl_span_bilinear565(func, tex, (uint16_t *)(void *)crow, zrow, n, z, dz, (int32_t)U, (int32_t)dU, (int32_t)V,
+                            (int32_t)dV);
         return;
     }
     if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
@@ -439,7 +409,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         src[1] = t->rgb[1];
         src[2] = t->rgb[2];
         if (sty->alpha != 0 || tex != NULL) /* constant alpha 0 discards every fragment */
-            span_blend565_any(func, blend, ss->zwrite, tex, sty->alpha, src, (uint16_t *)(void *)crow, zrow, n, z, dz,
+            zl_span_blend565(func, blend, ss->zwrite, tex, sty->alpha, src, (uint16_t *)(void *)crow, zrow, n, z, dz,
                               (int32_t)U, (int32_t)dU, (int32_t)V, (int32_t)dV);
         return;
     }

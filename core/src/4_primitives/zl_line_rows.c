@@ -31,6 +31,29 @@ static inline void plot(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, 
         put_pixel(crow + (size_t)x * ss->bpp, ss->bpp, pix, ss->keep);
 }
 
+/* floor(x / 255) for 0 <= x <= 65534, without a division: exact there
+ * (checked for every such x), and for two 16-bit lanes at once (below). */
+static ZL_ALWAYS_INLINE uint32_t div255_floor(uint32_t x)
+{
+    return (x + 1u + (x >> 8)) >> 8;
+}
+
+/* The coverage blend of a native RGB565 pixel with all channels written:
+ * blend()'s values, (old (255 - w) + c w + 127) / 255 per channel, with red
+ * and blue in the two 16-bit lanes of one word (each sum is at most
+ * 255 * 255 + 127, so no lane carries into the other) and no division. */
+static ZL_ALWAYS_INLINE uint16_t blend565(uint16_t v, uint32_t crb, uint32_t cg, unsigned w)
+{
+    uint32_t r5 = (uint32_t)v >> 11, g6 = ((uint32_t)v >> 5) & 63u, b5 = (uint32_t)v & 31u;
+    uint32_t orb = (((r5 << 3) | (r5 >> 2)) << 16) | ((b5 << 3) | (b5 >> 2));
+    uint32_t og = (g6 << 2) | (g6 >> 4);
+    uint32_t xrb = orb * (255u - w) + crb * w + UINT32_C(0x007F007F);
+    uint32_t xg = og * (255u - w) + cg * w + 127u;
+    uint32_t rb = ((xrb + UINT32_C(0x00010001) + ((xrb >> 8) & UINT32_C(0x00FF00FF))) >> 8) & UINT32_C(0x00FF00FF);
+    uint32_t g = div255_floor(xg);
+    return (uint16_t)(((rb >> 19) << 11) | ((g >> 2) << 5) | ((rb & 0xFFu) >> 3));
+}
+
 /* Blend colour (r, g, b) into pixel x with weight w (0..255), after the
  * depth test; antialiased lines never write depth. */
 static void blend(const zl_span_state *ss, const zl_active *t, uint8_t *crow, uint16_t *zrow, int32_t x, uint32_t d,
@@ -43,6 +66,13 @@ static void blend(const zl_span_state *ss, const zl_active *t, uint8_t *crow, ui
     if (ss->func != ZL_ALWAYS && !depth_pass(ss->func, d, zrow[x]))
         return;
     p = crow + (size_t)x * ss->bpp;
+    if (ss->format == ZL_FORMAT_RGB565 && ss->keep[0] == 0 && ss->keep[1] == 0) {
+        uint16_t v;
+        memcpy(&v, p, 2);
+        v = blend565(v, ((uint32_t)t->rgb[0] << 16) | t->rgb[2], t->rgb[1], w);
+        memcpy(p, &v, 2);
+        return;
+    }
     if (ss->format == ZL_FORMAT_RGB888) {
         old[0] = p[0];
         old[1] = p[1];
@@ -62,17 +92,45 @@ static void blend(const zl_span_state *ss, const zl_active *t, uint8_t *crow, ui
         old[2] = (b5 << 3) | (b5 >> 2);
     }
     for (k = 0; k < 3; k++)
-        old[k] = (old[k] * (255u - w) + t->rgb[k] * w + 127u) / 255u;
+        old[k] = div255_floor(old[k] * (255u - w) + t->rgb[k] * w + 127u);
     pack_color((zl_format)ss->format, old[0], old[1], old[2], pix);
     put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
 /* Weight (0..255) of the pixel below the ideal line: its distance to the
- * upper pixel's centre, the fraction f / D of a pixel. */
+ * upper pixel's centre, the fraction f / D of a pixel, rounded:
+ * floor((255 f + D / 2) / D), in 32 bits when it fits. */
 static inline unsigned aa_weight(const zl_edge *e)
 {
     int64_t f = (int64_t)e->den - 1 - e->rem;
+    if (e->den < (INT32_C(1) << 23))
+        return (unsigned)(((uint32_t)f * 255u + (uint32_t)e->den / 2u) / (uint32_t)e->den);
     return (unsigned)((f * 255 + e->den / 2) / e->den);
+}
+
+/* aa_weight stepped along a run without a division: with
+ * 255 f + D / 2 = w D + r (0 <= r < D) and 255 rstep = qs D + rs, a step
+ * (f += rstep, less D where the edge's remainder wraps) adds qs to w and rs
+ * to r, carries one when r reaches D, and takes 255 off at a wrap. */
+typedef struct {
+    int32_t w, r, qs, rs;
+} zl_aa_weight;
+
+static void aa_weight_init(zl_aa_weight *a, const zl_edge *e)
+{
+    int64_t f = (int64_t)e->den - 1 - e->rem, num = f * 255 + e->den / 2, s = (int64_t)e->rstep * 255;
+    if (e->den < (INT32_C(1) << 23)) { /* 0 <= f, rstep < den: 32 bits hold both */
+        uint32_t d = (uint32_t)e->den, n32 = (uint32_t)num, s32 = (uint32_t)s;
+        a->w = (int32_t)(n32 / d);
+        a->r = (int32_t)(n32 - (uint32_t)a->w * d);
+        a->qs = (int32_t)(s32 / d);
+        a->rs = (int32_t)(s32 - (uint32_t)a->qs * d);
+        return;
+    }
+    a->w = (int32_t)(num / e->den);
+    a->r = (int32_t)(num - (int64_t)a->w * e->den);
+    a->qs = (int32_t)(s / e->den);
+    a->rs = (int32_t)(s - (int64_t)a->qs * e->den);
 }
 
 static void aa_step(zl_active *t)
@@ -83,6 +141,169 @@ static void aa_step(zl_active *t)
     t->right.x--;
 }
 
+/* aa_step with the run's weight (zl_aa_weight) stepped along. */
+static ZL_ALWAYS_INLINE void aa_step_weight(zl_active *t, zl_aa_weight *a)
+{
+    zl_edge *e = &t->left;
+    t->ax += t->right.step;
+    e->x += e->step;
+    e->rem -= e->rstep;
+    a->w += a->qs;
+    a->r += a->rs;
+    if (a->r >= e->den) {
+        a->r -= e->den;
+        a->w++;
+    }
+    if (e->rem < 0) {
+        e->rem += e->den;
+        e->x += 1;
+        a->w -= 255;
+    }
+    t->z.row += t->z.dx;
+    t->right.x--;
+}
+
+/* The columns of x-major row r (see aa_row): from the record on, those
+ * whose floor(n) is r - 1 (lower pixels) then r (upper ones: the first of
+ * them is where the next row starts); floor(n) never falls along a run. */
+static void aa_walk(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
+{
+    int32_t r = t->row;
+    zl_active l = *t;
+    zl_aa_weight aw;
+    int saved = 0;
+    aa_weight_init(&aw, &l.left);
+    while (l.right.x > 0 && l.left.x <= r) {
+        unsigned w = (unsigned)aw.w;
+        uint32_t d = line_depth(l.z.row);
+        if (l.left.x == r - 1) {
+            blend(ss, t, crow, zrow, l.ax, d, w);
+        } else {
+            if (!saved) {
+                t->left = l.left;
+                t->ax = l.ax;
+                t->right.x = l.right.x;
+                t->z.row = l.z.row;
+                saved = 1;
+            }
+            blend(ss, t, crow, zrow, l.ax, d, 255u - w);
+        }
+        aa_step_weight(&l, &aw);
+    }
+    if (!saved) {
+        /* nothing of this run reaches the next row's upper pixels */
+        t->left = l.left;
+        t->ax = l.ax;
+        t->right.x = l.right.x;
+        t->z.row = l.z.row;
+        if (l.right.x == 0)
+            t->row = t->end;
+    }
+}
+
+/* The columns of a phase of aa_walk565: k of them, from column ax (stepped
+ * by dir), weight w stepped as zl_aa_weight steps it (no wrap within the
+ * phase), flip 255 for upper pixels (255 - w = w ^ 255). */
+typedef struct {
+    int32_t ax, dir, w, wr, qs, rs, den;
+    int64_t z, dz;
+} zl_aa_run;
+
+static ZL_ALWAYS_INLINE void aa_phase565_loop(int exact, unsigned func, zl_aa_run *ru, int32_t k, unsigned flip,
+                                              uint16_t *crow, const uint16_t *zrow, uint32_t width, uint32_t crb,
+                                              uint32_t cg)
+{
+    int32_t ax = ru->ax, dir = ru->dir, w = ru->w, wr = ru->wr, qs = ru->qs, rs = ru->rs, den = ru->den;
+    int64_t z = ru->z, dz = ru->dz;
+    /* exact: the depth is the high word of z + 1/2 on every column */
+    uint64_t zu = (uint64_t)(z + ((int64_t)1 << 31)), dzu = (uint64_t)dz;
+    int32_t j;
+    for (j = 0; j < k; j++) {
+        unsigned wv = (unsigned)w ^ flip;
+        if (wv != 0 && (uint32_t)ax < width) {
+            uint32_t d = exact ? (uint32_t)(zu >> 32) : line_depth(z + (int64_t)j * dz);
+            if (func == ZL_ALWAYS || depth_pass(func, d, zrow[ax]))
+                crow[ax] = blend565(crow[ax], crb, cg, wv);
+        }
+        ax += dir;
+        zu += dzu;
+        w += qs;
+        wr += rs;
+        if (wr >= den) {
+            wr -= den;
+            w++;
+        }
+    }
+    ru->ax = ax;
+    ru->w = w;
+    ru->wr = wr;
+    ru->z = z + (int64_t)k * dz;
+}
+
+static ZL_NOINLINE void aa_phase565(unsigned func, zl_aa_run *ru, int32_t k, unsigned flip, uint16_t *crow,
+                                    const uint16_t *zrow, uint32_t width, uint32_t crb, uint32_t cg)
+{
+    int64_t zb = ru->z + ((int64_t)1 << 31), ze = zb + (int64_t)(k - 1) * ru->dz, top = (int64_t)65536 << 32;
+    if (zb >= 0 && zb < top && ze >= 0 && ze < top)
+        aa_phase565_loop(1, func, ru, k, flip, crow, zrow, width, crb, cg);
+    else
+        aa_phase565_loop(0, func, ru, k, flip, crow, zrow, width, crb, cg);
+}
+
+/* aa_walk for native RGB565 with all channels, depth LESS, and an edge of
+ * step 0 (all but exact diagonals): the same pixels and values, the run cut where
+ * floor(n) changes (one division a phase), each phase a tight loop. */
+static ZL_NOINLINE void aa_walk565(zl_active *t, const zl_span_state *ss, uint8_t *crow8, uint16_t *zrow)
+{
+    int32_t r = t->row, count = t->right.x;
+    uint16_t *crow = (uint16_t *)(void *)crow8;
+    zl_edge e = t->left;
+    zl_aa_weight aw;
+    zl_aa_run ru;
+    uint32_t crb = ((uint32_t)t->rgb[0] << 16) | t->rgb[2], cg = t->rgb[1];
+    int saved = 0;
+    aa_weight_init(&aw, &e);
+    ru.ax = t->ax;
+    ru.dir = t->right.step;
+    ru.w = aw.w;
+    ru.wr = aw.r;
+    ru.qs = aw.qs;
+    ru.rs = aw.rs;
+    ru.den = e.den;
+    ru.z = t->z.row;
+    ru.dz = t->z.dx;
+    while (count > 0 && e.x <= r) {
+        int upper = e.x != r - 1;
+        /* the columns left before the remainder wraps (floor(n) + 1) */
+        int32_t k = e.rstep > 0 ? e.rem / e.rstep + 1 : count;
+        if (k > count)
+            k = count;
+        if (upper && !saved) {
+            t->left = e;
+            t->ax = ru.ax;
+            t->right.x = count;
+            t->z.row = ru.z;
+            saved = 1;
+        }
+        aa_phase565(ZL_LESS, &ru, k, upper ? 255u : 0u, crow, zrow, ss->width, crb, cg);
+        count -= k;
+        e.rem -= k * e.rstep;
+        if (e.rem < 0) {
+            e.rem += e.den;
+            e.x++;
+            ru.w -= 255;
+        }
+    }
+    if (!saved) {
+        t->left = e;
+        t->ax = ru.ax;
+        t->right.x = count;
+        t->z.row = ru.z;
+        if (count == 0)
+            t->row = t->end;
+    }
+}
+
 /* Antialiased line row: two pixels per column (x-major) or row (y-major),
  * rows floor(n) and floor(n) + 1 of the ideal minor coordinate n, weighted
  * by their distance to it. An x-major row r takes the columns whose floor(n)
@@ -90,7 +311,6 @@ static void aa_step(zl_active *t)
  * the first column of the row's run. */
 static int aa_row(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t *zrow)
 {
-    int32_t r = t->row;
     if (!t->lower_is_left) {
         unsigned w = aa_weight(&t->left);
         uint32_t d = line_depth(t->z.row);
@@ -100,38 +320,71 @@ static int aa_row(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t
             aa_step(t);
         else
             t->row = t->end;
-    } else {
-        zl_active l = *t;
-        int saved = 0;
-        while (l.right.x > 0 && l.left.x <= r) {
-            unsigned w = aa_weight(&l.left);
-            uint32_t d = line_depth(l.z.row);
-            if (l.left.x == r - 1) {
-                blend(ss, t, crow, zrow, l.ax, d, w);
-            } else {
-                if (!saved) {
-                    t->left = l.left;
-                    t->ax = l.ax;
-                    t->right.x = l.right.x;
-                    t->z.row = l.z.row;
-                    saved = 1;
-                }
-                blend(ss, t, crow, zrow, l.ax, d, 255u - w);
-            }
-            aa_step(&l);
-        }
-        if (!saved) {
-            /* nothing of this run reaches the next row's upper pixels */
-            t->left = l.left;
-            t->ax = l.ax;
-            t->right.x = l.right.x;
-            t->z.row = l.z.row;
-            if (l.right.x == 0)
-                t->row = t->end;
-        }
+    } else if (ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+               ((uintptr_t)crow & 1u) == 0 && ss->func == ZL_LESS && t->left.step == 0) {
+        aa_walk565(t, ss, crow, zrow);
+    } else { /* blend() has the RGB565 lanes too */
+        aa_walk(t, ss, crow, zrow);
     }
     if (t->row < t->end)
         t->row++;
+    return t->row < t->end;
+}
+
+/* The pixels of an x-major run in row t->row of a line whose edge steps by
+ * 0 (all but exact diagonals), from the run's first column (left.x is the
+ * row), RGB565, LESS with writes: zl_prim_row's
+ * loop below with the record in locals, the run's length from one
+ * division (the columns before the edge's remainder wraps, as in
+ * aa_walk565), and the depth as the high word of a 64-bit stepper biased
+ * by 1/2 (line_depth), clamped only where the run leaves 0 .. 65535. */
+static int line_run565(zl_active *t, int32_t width, uint16_t *crow, uint16_t *zrow, uint16_t pixel)
+{
+    zl_edge e = t->left;
+    int32_t count = t->right.x, ax = t->ax, dir = t->right.step, k, j;
+    int64_t zq = t->z.row, dzq = t->z.dx, zb;
+    k = e.rstep > 0 ? e.rem / e.rstep + 1 : count;
+    if (k > count)
+        k = count;
+    zb = zq + ((int64_t)1 << 31);
+    if (zb >= 0 && zb + (int64_t)(k - 1) * dzq >= 0 && zb < ((int64_t)65536 << 32) &&
+        zb + (int64_t)(k - 1) * dzq < ((int64_t)65536 << 32)) {
+        /* the high word is the depth on every pixel of the run */
+        uint64_t zu = (uint64_t)zb, dzu = (uint64_t)dzq;
+        for (j = 0; j < k; j++) {
+            uint32_t d = (uint32_t)(zu >> 32);
+            if ((uint32_t)ax < (uint32_t)width && d < zrow[ax]) {
+                zrow[ax] = (uint16_t)d;
+                crow[ax] = pixel;
+            }
+            ax += dir;
+            zu += dzu;
+        }
+    } else {
+        for (j = 0; j < k; j++) {
+            uint32_t d = line_depth(zq + (int64_t)j * dzq);
+            if ((uint32_t)ax < (uint32_t)width && d < zrow[ax]) {
+                zrow[ax] = (uint16_t)d;
+                crow[ax] = pixel;
+            }
+            ax += dir;
+        }
+    }
+    count -= k;
+    if (count == 0) {
+        t->row = t->end;
+        return 0;
+    }
+    e.rem -= k * e.rstep;
+    if (e.rem < 0) {
+        e.rem += e.den;
+        e.x++;
+    }
+    t->left = e;
+    t->ax = ax;
+    t->right.x = count;
+    t->z.row = zq + (int64_t)k * dzq;
+    t->row++;
     return t->row < t->end;
 }
 
@@ -158,6 +411,8 @@ int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint1
          * writes): the same pixels and values as plot() below. */
         uint16_t *crow = (uint16_t *)(void *)color_row, pixel;
         memcpy(&pixel, pix, 2);
+        if (t->lower_is_left && t->left.step == 0 && t->left.x == t->row)
+            return line_run565(t, ss->width, crow, depth_row, pixel);
         for (;;) {
             int32_t x = t->lower_is_left ? t->ax : t->left.x;
             uint32_t d = line_depth(t->z.row);
