@@ -4,12 +4,17 @@
 # build, the start-up code and linker script it needs to run under QEMU
 # (zline's port files, used here as a product would use its own BSP).
 #
-# consumer_executable(name how)  how: a label printed by the program
+# consumer_executable(name how [sources...])  how: a label printed by the
+# program; sources: the program's (default: app/consumer.c)
 set(CONSUMER_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(CONSUMER_STRICT_FLAGS -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror)
 
 function(consumer_executable name how)
-  add_executable(${name} ${CONSUMER_DIR}/app/consumer.c)
+  set(sources ${ARGN})
+  if(NOT sources)
+    set(sources ${CONSUMER_DIR}/app/consumer.c)
+  endif()
+  add_executable(${name} ${sources})
   target_compile_options(${name} PRIVATE ${CONSUMER_STRICT_FLAGS})
   target_compile_definitions(${name} PRIVATE CONSUMER_HOW="${how}")
   if(CMAKE_CROSSCOMPILING)
