@@ -40,6 +40,7 @@ set(ZLINE_HOST_CMAKE_ARGS "" CACHE STRING
 # Make zline::obj2c and zline::img2c exist (imported when they are not
 # zline's own targets); _ZLINE_CONVERTERS_DEPENDS (global property) names a
 # target that must be built before they run (the ExternalProject), if any.
+# QUIET: a missing converter is no error (the targets are then absent).
 function(_zline_find_converters)
   if(TARGET zline::obj2c AND TARGET zline::img2c)
     return()
@@ -47,6 +48,9 @@ function(_zline_find_converters)
   get_property(src GLOBAL PROPERTY ZLINE_ASSETS_SOURCE_DIR)
   if(ZLINE_HOST_TOOLS_DIR OR NOT src)
     foreach(tool obj2c img2c)
+      if(TARGET zline::${tool})
+        continue()
+      endif()
       string(TOUPPER ${tool} upper)
       if(ZLINE_HOST_TOOLS_DIR)
         find_program(ZLINE_${upper}_EXECUTABLE zline-${tool} HINTS ${ZLINE_HOST_TOOLS_DIR}
@@ -54,7 +58,9 @@ function(_zline_find_converters)
       else()
         find_program(ZLINE_${upper}_EXECUTABLE zline-${tool} NO_CMAKE_FIND_ROOT_PATH)
       endif()
-      if(NOT ZLINE_${upper}_EXECUTABLE)
+      if(NOT ZLINE_${upper}_EXECUTABLE AND "${ARGN}" STREQUAL "QUIET")
+        return()
+      elseif(NOT ZLINE_${upper}_EXECUTABLE)
         message(FATAL_ERROR "zline-${tool} not found (ZLINE_HOST_TOOLS_DIR='${ZLINE_HOST_TOOLS_DIR}'): "
                 "a cross firmware gets the converters from a host install of zline, "
                 "-DZLINE_HOST_TOOLS_DIR=<its prefix> (docs/PORTING.md)")
@@ -83,7 +89,6 @@ function(_zline_build_host_converters src)
                -DZLINE_BUILD_PORTS=OFF -DZLINE_BUILD_TOOLS=OFF -DZLINE_BUILD_BENCHMARKS=OFF
                -DZLINE_BUILD_PANEL=OFF -DZLINE_INSTALL=OFF -DZLINE_WARNINGS_AS_ERRORS=OFF
                ${ZLINE_HOST_CMAKE_ARGS}
-    BUILD_COMMAND ${CMAKE_COMMAND} --build <BINARY_DIR> --config Release --target zline-obj2c zline-img2c
     INSTALL_COMMAND ""
     BUILD_ALWAYS TRUE
     EXCLUDE_FROM_ALL TRUE
