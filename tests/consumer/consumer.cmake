@@ -30,10 +30,14 @@ function(consumer_executable name how)
 endfunction()
 
 # A file that only includes zline's header, compiled with no flags of its
-# own: its compile command in compile_commands.json must show no warning
-# flag (zline's flags never reach a consumer's compiler).
+# own and linked to zline::zline (and zline::panel where it exists): its
+# compile command in compile_commands.json must show no warning flag
+# (zline's flags never reach a consumer's compiler).
 function(consumer_flag_probe)
   file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/probe.c "#include \"zline/zline.h\"\nint consumer_probe(void);\nint consumer_probe(void) { return ZL_VERSION_MAJOR; }\n")
   add_library(consumer_probe OBJECT ${CMAKE_CURRENT_BINARY_DIR}/probe.c)
   target_link_libraries(consumer_probe PRIVATE zline::zline)
+  if(TARGET zline::panel) # the panel component's usage requirements: no flag either
+    target_link_libraries(consumer_probe PRIVATE zline::panel)
+  endif()
 endfunction()
