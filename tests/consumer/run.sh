@@ -29,7 +29,8 @@
 #   install_cortex-m4f          a hard-float Cortex-M4F build installed
 #   assets_find_package_cortex-m4f  the asset firmware against that package,
 #                    converters from the host install (ZLINE_HOST_TOOLS_DIR),
-#                    run under QEMU: its frame must equal assets_host's
+#                    run under QEMU: its frame must equal assets_host's;
+#                    a wrong ZLINE_HOST_TOOLS_DIR fails with a message
 #   assets_fetchcontent_cortex-m4f  the same through FetchContent: the
 #                    converters built for the host by ExternalProject
 #   debug_opt_levels every preset CPU and float ABI: the core compiles at -O0
@@ -271,6 +272,12 @@ install_m4f() {
 assets_find_package_m4f() {
     need qemu-system-arm
     [ -f "$prefix_m4f/lib/libzline.a" ] || fail "no Cortex-M4F install (the install_cortex-m4f case failed)"
+    # A cross package has no converters: a wrong host tools folder is an error that says so.
+    if cmake -S "$here/assets" -B "$out/assets-no-tools" -DCMAKE_PREFIX_PATH="$prefix_m4f" \
+        -DZLINE_HOST_TOOLS_DIR="$out/no-such-prefix" $(m4f_args) >"$out/assets-no-tools.log" 2>&1; then
+        fail "configured without converters"
+    fi
+    grep -q "zline-obj2c not found" "$out/assets-no-tools.log" || { cat "$out/assets-no-tools.log"; fail "no clear message"; }
     assets_build assets-fp-m4f find_package -DCMAKE_PREFIX_PATH="$prefix_m4f" -DZLINE_HOST_TOOLS_DIR="$prefix" $(m4f_args)
     grep -q "$prefix/bin/zline-obj2c" "$out/assets-fp-m4f/CMakeCache.txt" || fail "the converters are not the host install's"
     run_elf "$out/assets-fp-m4f/assets.elf" mps2-an386 >"$out/assets-fp-m4f.out" 2>&1 ||
