@@ -5,7 +5,15 @@
 #   cmake --install build --prefix /opt/zline
 #   find_package(zline 0.1 CONFIG REQUIRED)            -> zline::zline
 #   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS host)  -> zline::host too
-#   pkg-config --cflags --libs zline   (and zline-host)
+#   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS panel) -> zline::panel (SPI panel drivers)
+#   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS tools) -> zline::obj2c, zline::img2c
+#   pkg-config --cflags --libs zline   (and zline-host, zline-panel)
+#
+# The panel drivers (port/display) are the `panel` component, installed by
+# every build, cross ones included. The converters are the `tools`
+# component, host builds only (bin/zline-obj2c, bin/zline-img2c, exported
+# as zlineToolsTargets); zlineAssets.cmake, installed beside the package,
+# gives every find_package user zline_add_mesh() and zline_add_texture().
 #
 # The host port (OBJ loader, PNM writer) is its own export set and install
 # component, `host`: a cross build never installs it, and firmware that
@@ -35,6 +43,22 @@ if(TARGET zline_host)
           COMPONENT host)
 endif()
 
+if(TARGET zline_panel)
+  install(FILES ${PROJECT_SOURCE_DIR}/port/display/zl_spi_panel.h ${PROJECT_SOURCE_DIR}/port/display/zl_grey4.h
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/zline/panel COMPONENT panel)
+  install(TARGETS zline_panel EXPORT zlinePanelTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT panel)
+  install(EXPORT zlinePanelTargets NAMESPACE zline:: DESTINATION ${ZLINE_INSTALL_CMAKEDIR}
+          COMPONENT panel)
+endif()
+
+if(TARGET zline-obj2c AND TARGET zline-img2c)
+  install(TARGETS zline-obj2c zline-img2c EXPORT zlineToolsTargets
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+  install(EXPORT zlineToolsTargets NAMESPACE zline:: DESTINATION ${ZLINE_INSTALL_CMAKEDIR}
+          COMPONENT tools)
+endif()
+
 if(NOT ZLINE_HOST_HAS_PNG)
   set(ZLINE_HOST_HAS_PNG FALSE)
 endif()
@@ -45,6 +69,7 @@ configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/zlineConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/zlineConfigVersion.cmake
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/zlineConfig.cmake ${PROJECT_BINARY_DIR}/zlineConfigVersion.cmake
+              ${CMAKE_CURRENT_LIST_DIR}/zlineAssets.cmake
         DESTINATION ${ZLINE_INSTALL_CMAKEDIR} COMPONENT core)
 
 # pkg-config: the prefix found from the .pc file's own folder (pcfiledir), so
@@ -56,6 +81,11 @@ set(ZLINE_PC_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR})
 configure_file(${CMAKE_CURRENT_LIST_DIR}/zline.pc.in ${PROJECT_BINARY_DIR}/zline.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/zline.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
         COMPONENT core)
+if(TARGET zline_panel)
+  configure_file(${CMAKE_CURRENT_LIST_DIR}/zline-panel.pc.in ${PROJECT_BINARY_DIR}/zline-panel.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/zline-panel.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+          COMPONENT panel)
+endif()
 if(TARGET zline_host)
   set(ZLINE_PC_HOST_LIBS "")
   if(ZLINE_HOST_HAS_PNG)

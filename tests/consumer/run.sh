@@ -6,18 +6,36 @@
 #
 #   headers_*        every public header alone, in a consumer's strict C99 and
 #                    C++11 builds (gcc, g++, and clang/clang++ when present)
-#   subdir_host      add_subdirectory on the host: only libzline.a is built,
-#                    no zline warning flag reaches the consumer's compiler
+#   subdir_host      add_subdirectory on the host: only libzline.a and
+#                    libzline_panel.a are built, no zline warning flag reaches
+#                    the consumer's compiler
 #   subdir_<cpu>     the same in a Cortex-M cross build with zline's toolchain
 #                    file, one per CPU and float ABI (the per-ABI link tests:
 #                    the core links into firmware of that ABI), each run under
 #                    QEMU on its board
-#   install          cmake --install of a library-only build; what it installs
+#   install          cmake --install of a host build without tests or tools:
+#                    the library, components host and panel, the converters
 #   find_package     find_package(zline 0.1 CONFIG REQUIRED) from that prefix,
-#                    COMPONENTS host, and 1.0 refused (same-major versions)
+#                    COMPONENTS host, panel and tools, and 1.0 refused
+#                    (same-major versions)
 #   version          zl_version.h == CMake package version == zline.pc version
 #   fetchcontent     FetchContent from a local path
 #   pkg_config       pkg-config --cflags --libs zline with a plain cc command
+#   pkg_config_panel the same for zline-panel: a program calling the driver
+#   assets_host      tests/consumer/assets (a cube and a texture converted at
+#                    build time by zline_add_mesh / zline_add_texture, drawn
+#                    and sent through zline::panel to a recording bus) against
+#                    the installed host package: the reference frame
+#   install_cortex-m4f          a hard-float Cortex-M4F build installed
+#   assets_find_package_cortex-m4f  the asset firmware against that package,
+#                    converters from the host install (ZLINE_HOST_TOOLS_DIR),
+#                    run under QEMU: its frame must equal assets_host's;
+#                    a wrong ZLINE_HOST_TOOLS_DIR fails with a message
+#   assets_fetchcontent_cortex-m4f  the same through FetchContent: the
+#                    converters built for the host by ExternalProject
+#   debug_opt_levels every preset CPU and float ABI: the core compiles at -O0
+#                    and -Og with arm-none-eabi-gcc / riscv64-unknown-elf-gcc,
+#                    and the Cortex-M ones with clang --target=thumbv*-none-eabi
 #   vendor_host      core/src/**/*.c compiled into the consumer with its own
 #                    flags, no CMake at all; vendor_cortex-m4f the same with
 #                    arm-none-eabi-gcc for a hard-float Cortex-M4F
@@ -27,7 +45,8 @@
 #                    configure, build and test preset; host and cortex-m4f
 #                    configure
 #
-#   tests/consumer/run.sh [work-dir]     (default build/consumer; JOBS=2)
+#   tests/consumer/run.sh [work-dir]     (default build/consumer; JOBS=2;
+#                                        CONSUMER_ONLY="case ..." runs those)
 # Last line: "consumer: N passed, M failed, K skipped"; exit status 1 if any
 # failed. A case whose tool is missing reports itself skipped, never passed.
 set -u
@@ -47,6 +66,7 @@ SKIP=77
 # check NAME COMMAND...: run a case, its output in $out/NAME.log
 check() {
     name=$1; shift
+    case " ${CONSUMER_ONLY:-$name} " in *" $name "*) ;; *) return 0 ;; esac
     if ( "$@" ) >"$out/$name.log" 2>&1; then
         echo "consumer: PASS $name"; passed=$((passed + 1))
     elif [ $? -eq $SKIP ]; then
@@ -95,14 +115,15 @@ headers() { # headers CC FLAGS LANG-SUFFIX
     echo "$1: every public header compiles cleanly with $2"
 }
 
-# Only zline's library is built in the consumer's tree: no test, tool,
-# port or firmware target, no ExternalProject.
+# Only zline's libraries (the core and the panel component) are built in the
+# consumer's tree: no test, tool, port or firmware target, no ExternalProject.
 only_library_built() { # BUILD-DIR
-    libs=$(cd "$1" && find . -name '*.a' | sort)
-    [ "$libs" = "./zline/core/libzline.a" ] || fail "libraries built: $libs"
-    for d in tests tools port; do
+    libs=$(cd "$1" && find . -name '*.a' | sort | tr '\n' ' ')
+    [ "$libs" = "./zline/core/libzline.a ./zline/port/display/libzline_panel.a " ] || fail "libraries built: $libs"
+    for d in tests tools port/host port/cortex-m port/riscv; do
         [ ! -e "$1/zline/$d" ] || fail "zline/$d was configured in the consumer's build"
     done
+    [ ! -e "$1/zline-host-converters" ] || fail "the host converters were built though nothing used them"
     # zline's flags never on a consumer file: the probe has no flags of its own.
     # (CMake writes each entry's "command" on the line before its "file")
     grep -B1 '"file": ".*/probe.c"' "$1/compile_commands.json" | grep '"command"' >"$1/probe.cmd" ||
@@ -142,10 +163,15 @@ install_tree() {
     (cd "$prefix" && find . -type f | sort) | tee "$out/installed.txt"
     for f in include/zline/zline.h include/zline/zl_version.h lib/libzline.a lib/cmake/zline/zlineConfig.cmake \
         lib/cmake/zline/zlineConfigVersion.cmake lib/cmake/zline/zlineTargets.cmake lib/pkgconfig/zline.pc \
-        lib/libzline_host.a include/zline/host/zl_obj.h lib/pkgconfig/zline-host.pc; do
+        lib/libzline_host.a include/zline/host/zl_obj.h lib/pkgconfig/zline-host.pc \
+        lib/libzline_panel.a include/zline/panel/zl_spi_panel.h include/zline/panel/zl_grey4.h \
+        lib/pkgconfig/zline-panel.pc lib/cmake/zline/zlinePanelTargets.cmake \
+        lib/cmake/zline/zlineToolsTargets.cmake lib/cmake/zline/zlineAssets.cmake; do
         [ -f "$prefix/$f" ] || fail "not installed: $f"
     done
-    [ ! -d "$prefix/bin" ] || fail "a library-only build installed programs: $(ls "$prefix/bin")"
+    # The programs: the two converters, nothing else (no test, no benchmark).
+    [ "$(ls "$prefix/bin" | tr '\n' ' ')" = "zline-img2c zline-obj2c " ] || fail "programs installed: $(ls "$prefix/bin")"
+    "$prefix/bin/zline-obj2c" --bogus 2>&1 | grep -q usage || fail "the installed zline-obj2c does not run"
 }
 
 find_package_case() {
@@ -154,6 +180,7 @@ find_package_case() {
     cmake -S "$here/find_package" -B "$b" -DCMAKE_PREFIX_PATH="$prefix" -DCONSUMER_EXPECT_HOST=ON \
         -DCMAKE_BUILD_TYPE=Release && cmake --build "$b" -j "$jobs" || fail "build"
     "$b/consumer" || fail "the consumer's pixel check"
+    "$b/panel_probe" || fail "zline::panel's configuration"
 }
 
 version_case() {
@@ -172,8 +199,9 @@ fetchcontent() {
     b=$out/fetchcontent
     cmake -S "$here/fetchcontent" -B "$b" -DZLINE_SOURCE_DIR="$root" -DCMAKE_BUILD_TYPE=Release &&
         cmake --build "$b" -j "$jobs" || fail "build"
-    libs=$(cd "$b" && find . -name '*.a' | sort)
-    [ "$libs" = "./_deps/zline-build/core/libzline.a" ] || fail "libraries built: $libs"
+    libs=$(cd "$b" && find . -name '*.a' | sort | tr '\n' ' ')
+    [ "$libs" = "./_deps/zline-build/core/libzline.a ./_deps/zline-build/port/display/libzline_panel.a " ] ||
+        fail "libraries built: $libs"
     "$b/consumer" || fail "the consumer's pixel check"
 }
 
@@ -184,6 +212,87 @@ pkg_config() {
     echo "cc $strict_c $flags app/consumer.c $libs"
     cc $strict_c -DCONSUMER_HOW='"pkg-config"' $flags "$here/app/consumer.c" $libs -o "$out/consumer-pc" || fail "compile"
     "$out/consumer-pc" || fail "the consumer's pixel check"
+}
+
+pkg_config_panel() {
+    need pkg-config
+    export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+    flags="$(pkg-config --cflags zline-panel)" && libs="$(pkg-config --libs zline-panel)" || fail "pkg-config zline-panel"
+    echo "pkg-config zline-panel: $flags $libs"
+    printf '%s\n' '#include "zl_spi_panel.h"' '#include "zl_grey4.h"' \
+        'int main(void) { zl_panel_config c = zl_panel_config_ili9341_320x240(); zl_panel p;' \
+        '    return c.width == 320u && c.height == 240u && zl_panel_init(&p, &c, 0) == ZL_ERR_ARG ? 0 : 1; }' \
+        >"$out/panel-pc.c"
+    cc $strict_c $flags "$out/panel-pc.c" $libs -o "$out/panel-pc" || fail "compile"
+    "$out/panel-pc" || fail "the panel driver's configuration or argument check"
+}
+
+# --- asset conversion and the panel component in firmware -------------------
+# assets_build NAME CONSUMER_ZLINE [cmake args...]: build tests/consumer/assets
+assets_build() {
+    b=$out/$1; how=$2; shift 2
+    cmake -S "$here/assets" -B "$b" -DCONSUMER_ZLINE="$how" -DCMAKE_BUILD_TYPE=Release "$@" &&
+        cmake --build "$b" -j "$jobs" || fail "build"
+    ls "$b/zline_assets"
+}
+# assets_compare OUTPUT: the frame lines equal the host's, byte for byte
+assets_compare() {
+    [ -s "$out/assets-host.txt" ] || fail "no host reference (the assets_host case failed)"
+    grep '^assets:' "$1" >"$1.frame"
+    if ! cmp "$out/assets-host.txt" "$1.frame"; then
+        diff "$out/assets-host.txt" "$1.frame" | head -n 6
+        fail "the frame differs from the host's"
+    fi
+    echo "$(grep -c '^assets: row' "$1.frame") rows equal the host's: $(tail -n 1 "$1.frame")"
+}
+assets_host() {
+    [ -f "$prefix/lib/cmake/zline/zlineConfig.cmake" ] || fail "no installed tree (the install case failed)"
+    assets_build assets-host find_package -DCMAKE_PREFIX_PATH="$prefix"
+    "$out/assets-host/assets" >"$out/assets-host.out" || { cat "$out/assets-host.out"; fail "the frame's own checks"; }
+    grep '^assets:' "$out/assets-host.out" >"$out/assets-host.txt"
+    tail -n 1 "$out/assets-host.txt"
+}
+m4f_args() {
+    echo "-DCMAKE_TOOLCHAIN_FILE=$toolchain -DZLINE_CPU=cortex-m4f -DCONSUMER_PORT_DIR=$root/port/cortex-m -DCONSUMER_LD=mps2.ld"
+}
+prefix_m4f=$out/prefix-cortex-m4f
+install_m4f() {
+    need arm-none-eabi-gcc
+    b=$out/zline-lib-cortex-m4f
+    cmake -S "$root" -B "$b" -DCMAKE_BUILD_TYPE=Release $(m4f_args) -DZLINE_BUILD_TESTS=OFF -DZLINE_BUILD_TOOLS=OFF \
+        -DZLINE_BUILD_BENCHMARKS=OFF -DZLINE_BUILD_PORTS=OFF &&
+        cmake --build "$b" -j "$jobs" && cmake --install "$b" --prefix "$prefix_m4f" || fail "build and install"
+    (cd "$prefix_m4f" && find . -type f | sort)
+    for f in lib/libzline.a lib/libzline_panel.a include/zline/panel/zl_spi_panel.h lib/cmake/zline/zlineAssets.cmake; do
+        [ -f "$prefix_m4f/$f" ] || fail "not installed: $f"
+    done
+    # A cross build has no host programs to install: the firmware uses the host's.
+    [ ! -e "$prefix_m4f/bin" ] && [ ! -e "$prefix_m4f/lib/libzline_host.a" ] || fail "host parts in a cross install"
+}
+assets_find_package_m4f() {
+    need qemu-system-arm
+    [ -f "$prefix_m4f/lib/libzline.a" ] || fail "no Cortex-M4F install (the install_cortex-m4f case failed)"
+    # A cross package has no converters: a wrong host tools folder is an error that says so.
+    if cmake -S "$here/assets" -B "$out/assets-no-tools" -DCMAKE_PREFIX_PATH="$prefix_m4f" \
+        -DZLINE_HOST_TOOLS_DIR="$out/no-such-prefix" $(m4f_args) >"$out/assets-no-tools.log" 2>&1; then
+        fail "configured without converters"
+    fi
+    grep -q "zline-obj2c not found" "$out/assets-no-tools.log" || { cat "$out/assets-no-tools.log"; fail "no clear message"; }
+    assets_build assets-fp-m4f find_package -DCMAKE_PREFIX_PATH="$prefix_m4f" -DZLINE_HOST_TOOLS_DIR="$prefix" $(m4f_args)
+    grep -q "$prefix/bin/zline-obj2c" "$out/assets-fp-m4f/CMakeCache.txt" || fail "the converters are not the host install's"
+    run_elf "$out/assets-fp-m4f/assets.elf" mps2-an386 >"$out/assets-fp-m4f.out" 2>&1 ||
+        { cat "$out/assets-fp-m4f.out"; fail "the frame's own checks under QEMU"; }
+    assets_compare "$out/assets-fp-m4f.out"
+}
+assets_fetchcontent_m4f() {
+    need arm-none-eabi-gcc
+    need qemu-system-arm
+    assets_build assets-fc-m4f fetchcontent -DZLINE_SOURCE_DIR="$root" $(m4f_args)
+    [ -x "$out/assets-fc-m4f/zline-host-converters/tools/obj2c/zline-obj2c" ] ||
+        fail "the converters were not built for the host by ExternalProject"
+    run_elf "$out/assets-fc-m4f/assets.elf" mps2-an386 >"$out/assets-fc-m4f.out" 2>&1 ||
+        { cat "$out/assets-fc-m4f.out"; fail "the frame's own checks under QEMU"; }
+    assets_compare "$out/assets-fc-m4f.out"
 }
 
 # The vendored sources: every .c under core/src, recursively (the stage
@@ -235,6 +344,56 @@ abi_mismatch() {
 # otherwise), each preset README names is listed, and two of them configure
 # (host, and the hard-float cortex-m4f) into a scratch folder (-B overrides
 # the preset's build/<name>). CI's own cross runs use the same toolchain flags.
+# -O0 and -Og (what firmware is debugged at) with the core's own warnings as
+# errors, for every CPU and float ABI of CMakePresets.json. An asm path must
+# compile at every level or step aside for the C loop (issue 24: the M4F's
+# fill_blocks_stm had 'impossible constraints' at -O0). Compiled, not linked
+# or run here: the -O0 suite runs on the M4F in tests/run-all.sh. gcc's
+# warnings are errors (the project's compiler); clang's are listed, not fatal
+# (zline's builds do not use clang for Cortex-M).
+debug_flags="-std=c99 -Wall -Wextra -pedantic -Wshadow -Wconversion -Wsign-conversion -ffunction-sections"
+debug_compile() { # debug_compile LABEL COMPILER FLAGS...: every core source, -O0 then -Og
+    label=$1; cc=$2; shift 2
+    werror=-Werror
+    case $cc in clang*) werror= ;; esac
+    for opt in -O0 -Og; do
+        d=$out/debug/$label$opt
+        mkdir -p "$d" && (cd "$d" && "$cc" "$@" $opt $debug_flags $werror $(vendor_includes) -c $(vendor_sources)) \
+            >"$d.log" 2>&1 || { cat "$d.log"; fail "$label $opt: $cc $* $opt"; }
+        n=$(ls "$d" | wc -l)
+        [ "$n" -eq "$(vendor_sources | wc -l)" ] || fail "$label $opt: $n objects"
+        echo "$label $opt: $n objects, $(grep -c 'warning:' "$d.log") warnings"
+        grep 'warning:' "$d.log" | sed 's/^/    /'
+    done
+}
+debug_opt_levels() {
+    need arm-none-eabi-gcc
+    for cpu_flags in "cortex-m0:-mcpu=cortex-m0 -mfloat-abi=soft:thumbv6m-none-eabi" \
+        "cortex-m0plus:-mcpu=cortex-m0plus -mfloat-abi=soft:thumbv6m-none-eabi" \
+        "cortex-m3:-mcpu=cortex-m3 -mfloat-abi=soft:thumbv7m-none-eabi" \
+        "cortex-m4:-mcpu=cortex-m4 -mfloat-abi=soft:thumbv7em-none-eabi" \
+        "cortex-m4f:-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard:thumbv7em-none-eabihf" \
+        "cortex-m4f-softfp:-mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=softfp:thumbv7em-none-eabi" \
+        "cortex-m7:-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard:thumbv7em-none-eabihf" \
+        "cortex-m33:-mcpu=cortex-m33 -mfpu=fpv5-sp-d16 -mfloat-abi=hard:thumbv8m.main-none-eabihf" \
+        "cortex-m55:-mcpu=cortex-m55 -mfpu=auto -mfloat-abi=hard:thumbv8.1m.main-none-eabihf"; do
+        cpu=${cpu_flags%%:*}; rest=${cpu_flags#*:}; flags=${rest%%:*}; triple=${rest#*:}
+        debug_compile "gcc-$cpu" arm-none-eabi-gcc $flags -mthumb
+        if command -v clang >/dev/null 2>&1; then
+            # clang has no -mfpu=auto: the M55's FPU and MVE follow -mcpu there.
+            debug_compile "clang-$cpu" clang --target="$triple" $(echo "$flags" | sed 's/ -mfpu=auto//') -mthumb \
+                --sysroot=/usr/lib/arm-none-eabi
+        else
+            echo "clang-$cpu: clang not found, not compiled"
+        fi
+    done
+    need riscv64-unknown-elf-gcc
+    for arch in rv32imac rv32imc; do
+        debug_compile "gcc-$arch" riscv64-unknown-elf-gcc -march=${arch}_zicsr -mabi=ilp32 -mcmodel=medany \
+            --specs=picolibc.specs
+    done
+}
+
 presets() {
     cd "$root"
     cmake --list-presets=all >"$out/presets.list" || fail "cmake --list-presets=all"
@@ -265,10 +424,16 @@ check find_package find_package_case
 check version version_case
 check fetchcontent fetchcontent
 check pkg_config pkg_config
+check pkg_config_panel pkg_config_panel
+check assets_host assets_host
+check install_cortex-m4f install_m4f
+check assets_find_package_cortex-m4f assets_find_package_m4f
+check assets_fetchcontent_cortex-m4f assets_fetchcontent_m4f
 check vendor_host vendor_host
 check vendor_cortex-m4f vendor_m4f
 check abi_mismatch abi_mismatch
 check presets presets
+check debug_opt_levels debug_opt_levels
 
 echo "consumer: $passed passed, $failed failed, $skipped skipped"
 [ "$failed" -eq 0 ]
