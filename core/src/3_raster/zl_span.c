@@ -384,6 +384,14 @@ static ZL_ALWAYS_INLINE uint32_t lane_pair(uint32_t r, uint32_t g, uint32_t b)
     return (r & 0xF800F800u) | ((g & 0xFC00FC00u) >> 5) | ((b & 0xF800F800u) >> 11);
 }
 
+/* Cortex-M4/M7 (DSP): the pair runs below in assembly; elsewhere in C. */
+#if !defined(ZL_NO_ASM) && defined(__GNUC__) && defined(__ARM_ARCH_7EM__) && defined(__ARM_FEATURE_DSP)
+#define ZL_GOURAUD_ASM 1
+#else
+#define ZL_GOURAUD_ASM 0
+#endif
+
+#if !ZL_GOURAUD_ASM
 /* Gouraud RGB565 on an exact span from 4-byte aligned rows, a pair per step:
  * one depth load, two compares, one depth store and one colour store. As
  * flat_pair_run: i runs up to 0 from the rows' ends, and the result is the
@@ -406,6 +414,7 @@ static ZL_ALWAYS_INLINE int32_t gouraud_pair_run(unsigned func, uint16_t *cend, 
     }
     return 0;
 }
+#endif
 
 /*
  * On ARMv7E-M (Cortex-M4/M7: PKHTB) with GCC or Clang the runs are written
@@ -418,7 +427,7 @@ static ZL_ALWAYS_INLINE int32_t gouraud_pair_run(unsigned func, uint16_t *cend, 
  * (> 0) and the run; returns the number of pairs left when a test fails
  * (nothing of that pair written), 0 at the end.
  */
-#if !defined(ZL_NO_ASM) && defined(__GNUC__) && defined(__ARM_ARCH_7EM__) && defined(__ARM_FEATURE_DSP)
+#if ZL_GOURAUD_ASM
 #define ZL_GOURAUD_ASM 1
 /* One pair of the run (r0 colour, r1 depth pointer; y, dy, r, g, b and
  * their steps in r4 .. r11, zl_gouraud_run's order): the tests TEST1 and
