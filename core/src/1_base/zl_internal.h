@@ -152,6 +152,11 @@ struct zl_active {
  * their columns once active and lower.rem, lower.rstep their remainders
  * (zl_frame_rows.c, tiny_walk_start). */
 #define ZL_KIND_TINY 4
+/* A small Gouraud triangle of scanline mode (zl_tiny_gouraud_setup, plain
+ * Gouraud RGB565 meshes, MESH_GOURAUD565): its edges and depth plane as a
+ * ZL_KIND_TINY record, its colour planes (zl_tiny_colour) in the record's
+ * zl_gouraud slot. */
+#define ZL_KIND_TINY_GOURAUD 5
 
 /* How the spans of one draw write their pixels. */
 typedef struct {
@@ -437,6 +442,21 @@ void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, ui
  * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height);
+/* The colour planes of a ZL_KIND_TINY_GOURAUD record, zl_tiny_gouraud's
+ * (cr: at (ax, the record's row), stepped by cdy after each row), kept in
+ * the record's zl_gouraud slot of the work buffer (it fits). */
+typedef struct {
+    uint32_t cr[3], cdy[3], cdx[3], dc16[3];
+    int32_t dl[3];
+} zl_tiny_colour;
+/* zl_tiny_gouraud_setup into a scanline record of kind ZL_KIND_TINY_GOURAUD
+ * and its colour planes (same returns). */
+int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc, const zl_cached_vertex *const *v,
+                                 const uint8_t *const *col, uint16_t height);
+/* The span [x0, x1) (clipped, x0 < x1) of a ZL_KIND_TINY_GOURAUD record on
+ * its current row: the pixels zl_tiny_gouraud_draw writes on that row. */
+void zl_tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss, int32_t x0,
+                          int32_t x1, uint8_t *crow, uint16_t *zrow);
 /* zl_tiny_setup into a scanline record of kind ZL_KIND_TINY (same returns). */
 int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                          uint16_t width, uint16_t height);

@@ -292,6 +292,36 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
     return nl;
 }
 
+/* One span of a ZL_KIND_TINY_GOURAUD record (its fields: ZL_KIND_TINY's),
+ * exactly tiny_gouraud_rows' span on that row. */
+static ZL_ALWAYS_INLINE void tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss,
+                                               unsigned func, int32_t x0, int32_t x1, uint8_t *crow, uint16_t *zrow)
+{
+    uint16_t *cp = (uint16_t *)(void *)crow + x0, *zb = zrow + x0;
+    uint32_t dx = (uint32_t)(x0 - a->ax);
+    int32_t v = (int32_t)((uint32_t)a->right.rem + dx * (uint32_t)a->left.rstep), n = x1 - x0;
+    int32_t zlo = (int32_t)a->zlo, zhi = (int32_t)a->zhi;
+    uint32_t zq, r, g, b;
+    v = v < zlo ? zlo : (v > zhi ? zhi : v);
+    zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + (uint32_t)a->left.rem;
+    r = colour_start(tc->cr[0] + dx * tc->cdx[0]);
+    g = colour_start(tc->cr[1] + dx * tc->cdx[1]);
+    b = colour_start(tc->cr[2] + dx * tc->cdx[2]);
+    if (n <= ZL_SHORT_SPAN)
+        gouraud_short(cp, zb, n, zq, a->dz14, r, g, b, tc->dl, func);
+    else
+        gouraud_long(ss, cp, zb, n, zq, a->dz14, r, g, b, tc->dc16);
+}
+
+void zl_tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss, int32_t x0,
+                          int32_t x1, uint8_t *crow, uint16_t *zrow)
+{
+    if (ss->func == ZL_LESS)
+        tiny_gouraud_span(a, tc, ss, ZL_LESS, x0, x1, crow, zrow);
+    else
+        tiny_gouraud_span(a, tc, ss, ZL_LEQUAL, x0, x1, crow, zrow);
+}
+
 static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
                                                int long_left, uint8_t *color, int32_t color_stride, uint8_t *depth,
                                                int32_t depth_stride)

@@ -412,6 +412,34 @@ static ZL_ALWAYS_INLINE void tiny_edge_in(zl_edge *e, const zl_tiny_edge *te)
     e->den = te->d;
 }
 
+/* A set-up zl_tiny into record r (ZL_KIND_TINY's layout), kind aside. */
+static ZL_ALWAYS_INLINE void tiny_record(zl_active *r, const zl_tiny *tt)
+{
+    tiny_edge_in(&r->left, &tt->lng);
+    if (tt->first < tt->mid) { /* only edges with rows were set up */
+        tiny_edge_in(&r->right, &tt->up);
+        if (tt->mid < tt->end)
+            tiny_edge_in(&r->lower, &tt->low);
+    } else {
+        tiny_edge_in(&r->right, &tt->low);
+    }
+    /* the 32-bit plane in the unused DDA fields: the row value steps with the
+     * short edge (right), so it is kept apart from lower (see ZL_KIND_TINY);
+     * the values are modulo 2^32 (tiny_depth), their bits kept as int32 */
+    r->left.rem = (int32_t)tt->zbase; /* below 2^31: (zlo >> 2) + 2^13 */
+    r->left.rstep = (int32_t)tt->zdx;
+    r->right.rem = (int32_t)tt->zr;
+    r->right.rstep = (int32_t)tt->zdy;
+    r->zlo = (uint32_t)tt->zlo;
+    r->zhi = (uint32_t)tt->zhi;
+    r->dz14 = tt->dz14;
+    r->ax = tt->ax;
+    r->row = (int16_t)tt->first;
+    r->mid = (int16_t)tt->mid;
+    r->end = (int16_t)tt->end;
+    r->lower_is_left = (uint8_t)tt->long_left;
+}
+
 int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                          uint16_t width, uint16_t height)
 {
@@ -422,28 +450,27 @@ int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cache
     if (set <= 0)
         return set;
     r->kind = ZL_KIND_TINY;
-    tiny_edge_in(&r->left, &tt.lng);
-    if (tt.first < tt.mid) { /* only edges with rows were set up */
-        tiny_edge_in(&r->right, &tt.up);
-        if (tt.mid < tt.end)
-            tiny_edge_in(&r->lower, &tt.low);
-    } else {
-        tiny_edge_in(&r->right, &tt.low);
+    tiny_record(r, &tt);
+    return 1;
+}
+
+int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc, const zl_cached_vertex *const *v,
+                                 const uint8_t *const *col, uint16_t height)
+{
+    zl_tiny_gouraud tg;
+    int set, ch;
+    tg.t.low.n = tg.t.low.inc = tg.t.low.d = 0; /* set when it has rows: GCC cannot tell */
+    set = zl_tiny_gouraud_setup(&tg, v, col, height);
+    if (set <= 0)
+        return set;
+    r->kind = ZL_KIND_TINY_GOURAUD;
+    tiny_record(r, &tg.t);
+    for (ch = 0; ch < 3; ch++) {
+        tc->cr[ch] = tg.cr[ch];
+        tc->cdy[ch] = tg.cdy[ch];
+        tc->cdx[ch] = tg.cdx[ch];
+        tc->dc16[ch] = tg.dc16[ch];
+        tc->dl[ch] = tg.dl[ch];
     }
-    /* the 32-bit plane in the unused DDA fields: the row value steps with the
-     * short edge (right), so it is kept apart from lower (see ZL_KIND_TINY);
-     * the values are modulo 2^32 (tiny_depth), their bits kept as int32 */
-    r->left.rem = (int32_t)tt.zbase; /* below 2^31: (zlo >> 2) + 2^13 */
-    r->left.rstep = (int32_t)tt.zdx;
-    r->right.rem = (int32_t)tt.zr;
-    r->right.rstep = (int32_t)tt.zdy;
-    r->zlo = (uint32_t)tt.zlo;
-    r->zhi = (uint32_t)tt.zhi;
-    r->dz14 = tt.dz14;
-    r->ax = tt.ax;
-    r->row = (int16_t)tt.first;
-    r->mid = (int16_t)tt.mid;
-    r->end = (int16_t)tt.end;
-    r->lower_is_left = (uint8_t)tt.long_left;
     return 1;
 }
