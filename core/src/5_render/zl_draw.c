@@ -491,11 +491,12 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
 #if ZL_DRAW_CACHE_SLOTS > 0
-    if (src.cache == NULL && (plain_flat(ctx) || plain_gouraud(ctx, mesh))) {
+    if (src.cache == NULL) {
+        int flat = plain_flat(ctx);
         /* the set-up in the context, not on the stack of the general path */
         zl_vx *vx = (zl_vx *)(void *)ctx->draw_setup;
-        if (zl_vx_prepare(&src, vx)) {
-            draw_small(ctx, &src, &ss, vx, !plain_flat(ctx));
+        if ((flat || plain_gouraud(ctx, mesh)) && zl_vx_prepare(&src, vx)) {
+            draw_small(ctx, &src, &ss, vx, !flat);
             return ZL_OK;
         }
     }
