@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Fast exact division (zl_udiv64_32, and zl_div_inv for a divisor fixed per
- * triangle) against the plain 64-bit C division, on
+ * Fast exact division (zl_udiv64_32, zl_div_inv for a divisor fixed per
+ * triangle, and zl_div16 for one below 2^16: in the _mul32 build its
+ * reciprocal form) against the plain C division, on
  * edge cases and on many pseudo-random operands from a fixed-seed generator
  * (the same sequence on the host and on every Cortex-M). Then the vertex
  * cache (zl_cache_vertex, zl_cache_vertices) and zl_project, whose fast
@@ -10,6 +11,7 @@
 #include <string.h>
 
 #include "../core/src/1_base/zl_internal.h"
+#include "../core/src/3_raster/zl_raster.h"
 #include "../core/src/3_raster/zl_span_tex.h"
 #include "unity.h"
 
@@ -167,6 +169,34 @@ static void test_div_inv_random(void)
         check_inv(n, d);
     }
     TEST_ASSERT_EQUAL_UINT(0, inv_failures);
+}
+
+/* zl_div16_q (the planes' shared divisor below 2^16) for every divisor:
+ * numerators 0, c - 1, c, the largest allowed (c 2^16 - 1), a quotient's
+ * first and last numerator for random quotients below 2^16, and random
+ * numerators, each against x / c. */
+static void test_div16_every_divisor(void)
+{
+    uint32_t c, failures = 0;
+    for (c = 1; c < 65536u; c++) {
+        zl_div16 d;
+        uint32_t top = c * 65536u - 1u, xs[12];
+        unsigned k;
+        zl_div16_init(&d, c);
+        xs[0] = 0;
+        xs[1] = c - 1u;
+        xs[2] = c;
+        xs[3] = top;
+        for (k = 4; k < 12; k += 2) {
+            uint32_t q = rnd32() >> 16;
+            xs[k] = q * c;
+            xs[k + 1] = k == 10 ? (uint32_t)(rnd64() % ((uint64_t)top + 1u)) : q * c + c - 1u;
+        }
+        for (k = 0; k < 12; k++)
+            if (zl_div16_q(&d, xs[k]) != xs[k] / c && failures++ < 5)
+                TEST_ASSERT_EQUAL_UINT32(xs[k] / c, zl_div16_q(&d, xs[k]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(0, failures);
 }
 
 /* ------------------------------------------------ the vertex cache */
@@ -801,6 +831,27 @@ static void test_div255_small_all(void)
             TEST_ASSERT_EQUAL_UINT(x / 255u, zl_div255_small(x));
 }
 
+/* zl_div255_31 (smooth lighting's colour scaling without a divide): every
+ * x below 2^16, the multiples of 255 and their neighbours up to 2^31 - 1
+ * (stride 255 * 4099), the top values, and random ones, against x / 255. */
+static void test_div255_31(void)
+{
+    uint32_t x, k, failures = 0;
+    for (x = 0; x < 65536u; x++)
+        failures += zl_div255_31(x) != x / 255u;
+    for (x = 255u; x < 0x7FFFFFFFu - 255u * 4099u; x += 255u * 4099u)
+        failures += (zl_div255_31(x - 1u) != (x - 1u) / 255u) + (zl_div255_31(x) != x / 255u) +
+                    (zl_div255_31(x + 254u) != (x + 254u) / 255u);
+    for (x = 0x7FFFFFFFu - 1000u; x < 0x7FFFFFFFu; x++)
+        failures += zl_div255_31(x) != x / 255u;
+    failures += zl_div255_31(0x7FFFFFFFu) != 0x7FFFFFFFu / 255u;
+    for (k = 0; k < 200000u; k++) {
+        x = rnd32() >> 1;
+        failures += zl_div255_31(x) != x / 255u;
+    }
+    TEST_ASSERT_EQUAL_UINT32(0, failures);
+}
+
 /* zl_mul_s32_split (the plane set-up's products without a 64-bit
  * multiply) against the C product: the corners of int32 and random pairs
  * of every magnitude. */
@@ -863,6 +914,7 @@ int main(void)
     RUN_TEST(test_udiv_random_numerators);
     RUN_TEST(test_div_inv_corners);
     RUN_TEST(test_div_inv_random);
+    RUN_TEST(test_div16_every_divisor);
     RUN_TEST(test_cache_matches_64bit_formulas);
     RUN_TEST(test_cache_edges);
     RUN_TEST(test_cache_position_bound);
@@ -872,6 +924,7 @@ int main(void)
     RUN_TEST(test_lighting_edges);
     RUN_TEST(test_isqrt32_squares);
     RUN_TEST(test_div255_small_all);
+    RUN_TEST(test_div255_31);
     RUN_TEST(test_mul_s32_split);
     RUN_TEST(test_persp_recip_near);
     return UNITY_END();

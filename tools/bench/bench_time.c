@@ -1,8 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * zline-bench-time: wall-clock milliseconds per frame of the benchmark scene
- * (bench_scene.h: the bunny at 320x240, RGB565) on the host, in the three
- * ways a user draws it:
+ * (bench_scene.h: the bunny at 320x240, RGB565) on the host, shaded three
+ * ways (as port/cortex-m/bench/scenes.c shades them, issue 21):
+ *   bunny                 one lit flat colour per triangle
+ *   bunny_gouraud         a colour per vertex (from its position), Gouraud
+ *   bunny_smooth          zl_light_vertices per frame (ambient + one
+ *                         directional light, area-weighted vertex normals
+ *                         of zl_obj_compute_normals), Gouraud
+ * each in the three ways a user draws it:
  *   frame + vertex cache  zl_draw_mesh with ctx.vertex_cache set (the
  *                         headline configuration of the Cortex-M tables)
  *   frame, default call   zl_draw_mesh as zl_init leaves the context
@@ -15,7 +21,7 @@
  *
  *   zline-bench-time MODEL [FRAMES]        FRAMES defaults to 2001
  *
- * The three images are compared byte for byte with each other before
+ * The three images of a scene are compared byte for byte with each other before
  * timing: a benchmark of a path that draws something else measures nothing.
  * Exit status: 0, or 1 when an image differs, 2 on bad arguments or input.
  * Times depend on the machine and its load; docs/MEASUREMENTS.md quotes them with the
@@ -44,11 +50,29 @@ typedef struct {
     void *work; /* scanline mode's work buffer */
     size_t work_bytes;
     zl_frame_config config;
+    /* bunny_smooth: lit again every frame into lit (the mesh's colours) */
+    const zl_lighting *lighting;
+    const zl_mat4 *modelview;
+    const int16_t *normals;
+    uint8_t *lit;
 } scene;
+
+/* zl_light_vertices of a lit scene, as part of its frame. */
+static void light(const scene *s)
+{
+    zl_mesh m;
+    if (s->lighting == NULL)
+        return;
+    m = s->mesh;
+    m.vertex_colors = NULL;
+    if (zl_light_vertices(s->lighting, s->modelview, &m, s->normals, s->lit) != ZL_OK)
+        exit(2);
+}
 
 static void draw_frame(const scene *s)
 {
     zl_context ctx;
+    light(s);
     bench_scene_context(&ctx, color, depth, &s->state);
     ctx.vertex_cache = s->vertex_cache;
     ctx.vertex_cache_bytes = s->vertex_cache_bytes;
@@ -66,6 +90,7 @@ static int copy_row(void *user, const zl_band *b)
 static void draw_scanline(const scene *s)
 {
     zl_frame f;
+    light(s);
     if (zl_frame_begin(&f, &s->config, s->work, s->work_bytes, background, 65535) != ZL_OK ||
         zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK || zl_frame_render(&f, copy_row, NULL) != 0)
         exit(2);
@@ -83,6 +108,7 @@ static void *scanline_setup(scene *s)
     s->config.band_rows = 1;
     s->config.format = ZL_FORMAT_RGB565;
     s->config.color_buffers = 1;
+    s->config.gouraud = s->state.shading == ZL_SHADE_GOURAUD;
     s->config.max_meshes = 1;
     s->config.max_vertices = s->mesh.vertex_count;
     s->config.max_triangles = s->mesh.triangle_count;
@@ -138,22 +164,63 @@ static void time_modes(const draw_fn *draws, const scene *s, unsigned modes, dou
     }
 }
 
-int main(int argc, char **argv)
+/* A colour channel from a model coordinate, as scenes.c's channel_of. */
+static uint8_t channel_of(zl_fixed p)
+{
+    int32_t c = 40 + (int32_t)(((int32_t)p + ZL_FX_ONE) / 655);
+    return (uint8_t)(c < 0 ? 0 : c > 255 ? 255 : c);
+}
+
+/* The shading of scene k (0 flat, 1 bunny_gouraud, 2 bunny_smooth) on the
+ * loaded bunny: colours into `colors` (3 per vertex). */
+static int shade(scene *s, int k, const zl_obj *obj, uint8_t *colors, zl_lighting *lt, zl_mat4 *view)
+{
+    uint32_t i;
+    zl_mat4 proj;
+    zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2}, target = {0, 0, 0}, up = {0, ZL_FX_ONE, 0};
+    if (k == 0)
+        return 0;
+    s->state.light_on = 0;
+    s->state.shading = ZL_SHADE_GOURAUD;
+    s->mesh.vertex_colors = colors;
+    if (k == 1) {
+        for (i = 0; i < 3u * s->mesh.vertex_count; i++)
+            colors[i] = channel_of(s->mesh.positions[i]);
+        return 0;
+    }
+    if (zl_mat4_perspective(&proj, zl_angle_from_deg(ZL_FX_INT(60)), ZL_FX_INT(BENCH_W) / BENCH_H, ZL_FX_ONE / 10,
+                            ZL_FX_INT(100)) != ZL_OK ||
+        zl_mat4_look_at(view, eye, target, up) != ZL_OK)
+        return 1;
+    zl_lighting_default(lt);
+    lt->ambient.r = lt->ambient.g = lt->ambient.b = 40;
+    lt->material.r = 230;
+    lt->material.g = 200;
+    lt->material.b = 160;
+    lt->light_count = 1;
+    lt->lights[0].dir.x = ZL_FX_ONE * 3 / 8;
+    lt->lights[0].dir.y = ZL_FX_HALF;
+    lt->lights[0].dir.z = ZL_FX_ONE * 3 / 4;
+    lt->lights[0].diffuse.r = lt->lights[0].diffuse.g = lt->lights[0].diffuse.b = 215;
+    s->lighting = lt;
+    s->modelview = view;
+    s->normals = obj->normals;
+    s->lit = colors;
+    light(s);
+    return 0;
+}
+
+/* The three modes of scene k: 0 when they draw the same image, timed. */
+static int run_scene(const char *scene_name, const scene *base, int frames)
 {
     static const char *names[] = {"frame + vertex cache", "frame, default call (no caller cache)",
                                   "scanline (one-row bands)"};
     static const draw_fn draws[] = {draw_frame, draw_frame, draw_scanline};
-    zl_obj obj;
     scene s[3];
     double *ms[3];
-    int frames = argc == 3 ? atoi(argv[2]) : 2001, failed = 0;
+    int failed = 0;
     unsigned m;
-    if (argc < 2 || argc > 3 || frames < 1 || frames > 1000000) {
-        fprintf(stderr, "usage: %s MODEL [FRAMES 1..1000000]\n", argv[0]);
-        return 2;
-    }
-    if (bench_scene_load(argv[1], &obj, &s[0].mesh, &s[0].mvp, &s[0].state) != 0)
-        return 2;
+    s[0] = *base;
     s[0].vertex_cache_bytes = ZL_VERTEX_CACHE_BYTES(s[0].mesh.vertex_count);
     s[0].vertex_cache = malloc(s[0].vertex_cache_bytes) /* malloc aligns for any type */;
     s[1] = s[0];
@@ -163,28 +230,59 @@ int main(int argc, char **argv)
     for (m = 0; m < 3; m++)
         ms[m] = malloc((size_t)frames * sizeof *ms[m]);
     if (s[0].vertex_cache == NULL || ms[0] == NULL || ms[1] == NULL || ms[2] == NULL || scanline_setup(&s[2]) == NULL)
-        return 2;
+        exit(2);
     for (m = 0; m < 3; m++) {
         draws[m](&s[m]);
         if (m == 0)
             memcpy(reference, color, sizeof color);
         else if (memcmp(reference, color, sizeof color) != 0) {
-            fprintf(stderr, "%s: the image differs from frame mode's\n", names[m]);
+            fprintf(stderr, "%s, %s: the image differs from frame mode's\n", scene_name, names[m]);
             failed = 1;
         }
     }
-    printf("| mode | median ms/frame | fastest ms/frame |\n|---|---:|---:|\n");
     time_modes(draws, s, 3, ms, frames);
     for (m = 0; m < 3; m++) {
         qsort(ms[m], (size_t)frames, sizeof *ms[m], by_value);
-        printf("| %s | %.4f | %.4f |\n", names[m], ms[m][frames / 2], ms[m][0]);
-    }
-    printf("\n%d frames per mode after %d warm-up frames, in rounds of %d a mode, %dx%d RGB565.\n", frames,
-           WARMUP_FRAMES, ROUND_FRAMES, BENCH_W, BENCH_H);
-    for (m = 0; m < 3; m++)
+        printf("| %s | %s | %.4f | %.4f |\n", scene_name, names[m], ms[m][frames / 2], ms[m][0]);
         free(ms[m]);
+    }
     free(s[0].vertex_cache);
     free(s[2].work);
+    return failed;
+}
+
+int main(int argc, char **argv)
+{
+    static const char *scene_names[] = {"bunny", "bunny_gouraud", "bunny_smooth"};
+    zl_obj obj;
+    scene base;
+    zl_lighting lighting;
+    zl_mat4 view;
+    uint8_t *colors;
+    int frames = argc == 3 ? atoi(argv[2]) : 2001, failed = 0, k;
+    if (argc < 2 || argc > 3 || frames < 1 || frames > 1000000) {
+        fprintf(stderr, "usage: %s MODEL [FRAMES 1..1000000]\n", argv[0]);
+        return 2;
+    }
+    memset(&base, 0, sizeof base);
+    if (bench_scene_load(argv[1], &obj, &base.mesh, &base.mvp, &base.state) != 0)
+        return 2;
+    if (zl_obj_compute_normals(&obj, ZL_OBJ_NORMALS_AREA) != ZL_OBJ_OK)
+        return 2;
+    colors = malloc(3u * base.mesh.vertex_count + 1u);
+    if (colors == NULL)
+        return 2;
+    printf("| scene | mode | median ms/frame | fastest ms/frame |\n|---|---|---:|---:|\n");
+    for (k = 0; k < 3; k++) {
+        scene s = base;
+        if (shade(&s, k, &obj, colors, &lighting, &view) != 0)
+            return 2;
+        failed |= run_scene(scene_names[k], &s, frames);
+    }
+    printf("\n%d frames per mode after %d warm-up frames, in rounds of %d a mode, %dx%d RGB565; bunny_smooth's "
+           "frames include zl_light_vertices.\n",
+           frames, WARMUP_FRAMES, ROUND_FRAMES, BENCH_W, BENCH_H);
+    free(colors);
     zl_obj_free(&obj);
     return failed;
 }

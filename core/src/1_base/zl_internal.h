@@ -152,6 +152,11 @@ struct zl_active {
  * their columns once active and lower.rem, lower.rstep their remainders
  * (zl_frame_rows.c, tiny_walk_start). */
 #define ZL_KIND_TINY 4
+/* A small Gouraud triangle of scanline mode (zl_tiny_gouraud_setup, plain
+ * Gouraud RGB565 meshes, MESH_GOURAUD565): its edges and depth plane as a
+ * ZL_KIND_TINY record, its colour planes (zl_tiny_colour) in the record's
+ * zl_gouraud slot. */
+#define ZL_KIND_TINY_GOURAUD 5
 
 /* How the spans of one draw write their pixels. */
 typedef struct {
@@ -256,6 +261,19 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 static inline uint32_t zl_div255_small(uint32_t x)
 {
     return (x * 0x8081u) >> 23;
+}
+
+/* floor(x / 255) for x < 2^31 without a divide instruction: x / 256 +
+ * x / 2^16 + x / 2^24, floored, is at most 4 below the quotient (checked
+ * for every such x), then the remainder corrects it. */
+static inline uint32_t zl_div255_31(uint32_t x)
+{
+    uint32_t q = (x >> 8) + (x >> 16) + (x >> 24), r = x - q * 255u;
+    while (r >= 255u) {
+        q++;
+        r -= 255u;
+    }
+    return q;
 }
 
 /* 1 when the four edge-vector components are each within +-2^14, so that
@@ -419,11 +437,16 @@ typedef struct {
 /* A small Gouraud triangle of frame mode: its zl_tiny, and each colour
  * plane (r, g, b; Q20 of 0..255, modulo 2^32) at (ax, first) with its
  * change per row and per pixel, its Q16 span step (step32) and lane step
- * (zl_span.h's lane colour). */
+ * (zl_span.h's lane colour). A ZL_KIND_TINY_GOURAUD record of scanline mode
+ * keeps its zl_tiny_colour in the record's zl_gouraud slot of the work
+ * buffer (it fits; cr then at the record's current row). */
 typedef struct {
-    zl_tiny t;
     uint32_t cr[3], cdy[3], cdx[3], dc16[3];
     int32_t dl[3];
+} zl_tiny_colour;
+typedef struct {
+    zl_tiny t;
+    zl_tiny_colour c;
 } zl_tiny_gouraud;
 /* zl_tiny_setup of cached vertices v[0..2] with vertex colours col[0..2]
  * (3 bytes each), and the colour planes zl_tri_setup_rows makes: same
@@ -437,6 +460,14 @@ void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, ui
  * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                   uint16_t width, uint16_t height);
+/* zl_tiny_gouraud_setup into a scanline record of kind ZL_KIND_TINY_GOURAUD
+ * and its colour planes (same returns). */
+int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc, const zl_cached_vertex *const *v,
+                                 const uint8_t *const *col, uint16_t height);
+/* The span [x0, x1) (clipped, x0 < x1) of a ZL_KIND_TINY_GOURAUD record on
+ * its current row: the pixels zl_tiny_gouraud_draw writes on that row. */
+void zl_tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss, int32_t x0,
+                          int32_t x1, uint8_t *crow, uint16_t *zrow);
 /* zl_tiny_setup into a scanline record of kind ZL_KIND_TINY (same returns). */
 int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                          uint16_t width, uint16_t height);

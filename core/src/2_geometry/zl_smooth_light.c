@@ -191,7 +191,11 @@ static uint32_t pow30(uint32_t x, unsigned e)
  * [0, 1] (0 for a negative one). */
 static uint32_t cos30(const int32_t *n, const int32_t *u)
 {
+#if ZL_MUL32_ONLY /* the same products without __aeabi_lmul */
+    int64_t dot = zl_mul_s32_split(n[0], u[0]) + zl_mul_s32_split(n[1], u[1]) + zl_mul_s32_split(n[2], u[2]);
+#else
     int64_t dot = (int64_t)n[0] * u[0] + (int64_t)n[1] * u[1] + (int64_t)n[2] * u[2]; /* |.| < 3 * 2^60 */
+#endif
     int64_t c;
     if (dot <= 0)
         return 0;
@@ -225,9 +229,15 @@ static int normal30(const int16_t *nin, int32_t *u)
     r0 = zl_isqrt32(q);                                                                 /* >= 2^14 */
     /* |n| = r0 + f, f in [0, 1): f ~ (q - r0^2) / (2 r0); q - r0^2 <= 2 r0 < 2^17 */
     r16 = r0 * 65536u + ((q - r0 * r0) * 32768u) / r0;
-    rec = zl_udiv64_32((uint64_t)1 << 61, r16, NULL); /* 2^45 / |n|, below 2^31 */
+    rec = zl_udiv64_32((uint64_t)1 << 61, r16, NULL); /* 2^45 / |n|, at most 2^31 */
     for (k = 0; k < 3; k++)
+#if ZL_MUL32_ONLY /* in two 32-bit products: |n_k| <= 2^15, rec <= 2^31 (2^31 for |n| = 2^14) */
+        u[k] = (int32_t)zl_floor_shift64((int64_t)(n[k] * (int32_t)(rec >> 16)) * 65536 +
+                                             (int64_t)(n[k] * (int32_t)(rec & 0xFFFFu)) + (1 << 14),
+                                         15);
+#else
         u[k] = (int32_t)zl_floor_shift64((int64_t)n[k] * rec + (1 << 14), 15);
+#endif
     return 1;
 }
 
@@ -236,8 +246,8 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
 {
     sl_light pl[ZL_MAX_LIGHTS];
     const uint8_t *vc;
-    uint32_t v, count;
-    unsigned i, k, nl;
+    uint32_t v, count, amb[3], mtl[3];
+    unsigned i, k, nl, shininess;
     if (lt == NULL || mesh == NULL)
         return ZL_ERR_ARG;
     if (lt->light_count > ZL_MAX_LIGHTS || lt->shininess > ZL_MAX_SHININESS)
@@ -249,6 +259,15 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
         return ZL_ERR_RANGE;
     nl = lt->light_count;
     vc = mesh->vertex_colors;
+    /* in locals: a store to colors (bytes) may alias *lt, which the loop
+     * would otherwise read again after every one */
+    amb[0] = lt->ambient.r * 4096u;
+    amb[1] = lt->ambient.g * 4096u;
+    amb[2] = lt->ambient.b * 4096u;
+    mtl[0] = lt->material.r;
+    mtl[1] = lt->material.g;
+    mtl[2] = lt->material.b;
+    shininess = lt->shininess;
     for (v = 0; v < count; v++) {
         int32_t u[3];
         uint32_t d12[ZL_MAX_LIGHTS], s12[ZL_MAX_LIGHTS];
@@ -260,15 +279,18 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
             s12[i] = 0;
             if (d != 0 && pl[i].spec) {
                 uint32_t x = cos30(u, pl[i].h);
-                s12[i] = (pow30(x, lt->shininess) + (1u << 17)) >> 18;
+                s12[i] = (pow30(x, shininess) + (1u << 17)) >> 18;
             }
         }
         for (k = 0; k < 3; k++) {
-            uint32_t m = mat != NULL ? mat[k] : (k == 0 ? lt->material.r : k == 1 ? lt->material.g : lt->material.b);
-            uint32_t f = (k == 0 ? lt->ambient.r : k == 1 ? lt->ambient.g : lt->ambient.b) * 4096u, c;
+            uint32_t m = mat != NULL ? mat[k] : mtl[k], f = amb[k], c;
             for (i = 0; i < nl; i++)
                 f += pl[i].d[k] * d12[i]; /* below 5 * 255 * 2^12 < 2^23 */
+#if ZL_MUL32_ONLY
+            c = zl_div255_31(m * f + 127u); /* m f < 2^31 */
+#else
             c = (m * f + 127u) / 255u; /* m f < 2^31 */
+#endif
             for (i = 0; i < nl; i++)
                 c += pl[i].s[k] * s12[i];
             c = (c + 2048u) >> 12;

@@ -91,6 +91,71 @@ typedef struct {
     int small;                     /* every |dx|, |dy| below 2^17 (int16 vertices) */
 } plane_frame;
 
+/*
+ * Division by one divisor c (1 <= c < 2^16) many times, of numerators
+ * x < c 2^16 (quotients below 2^16): where there is no divide instruction
+ * (ZL_MUL32_ONLY) by a reciprocal made once (one division for all the
+ * triangle's planes), else by the instruction. The reciprocal is Moller and
+ * Granlund's ("Improved division by invariant integers", 2011, algorithm 4)
+ * for one 16-bit digit: c shifted left by s into [2^15, 2^16), v =
+ * floor((2^32 - 1) / (c << s)) - 2^16; then a quotient costs one 16x16-bit
+ * product and at most two corrections, and is exact (tests/test_div16.c
+ * checks it against the division for every divisor).
+ */
+typedef struct {
+    uint32_t c;
+#if ZL_MUL32_ONLY
+    uint32_t cn, v;
+    unsigned s;
+#endif
+} zl_div16;
+
+/* No divisor yet (c = 0): zl_div16_q must not be called. */
+static ZL_ALWAYS_INLINE void zl_div16_none(zl_div16 *d)
+{
+    d->c = 0;
+#if ZL_MUL32_ONLY
+    d->cn = d->v = 0;
+    d->s = 0;
+#endif
+}
+
+static ZL_ALWAYS_INLINE void zl_div16_init(zl_div16 *d, uint32_t c)
+{
+    d->c = c;
+#if ZL_MUL32_ONLY
+    d->s = 0;
+    d->cn = c;
+    while (d->cn < 0x8000u) {
+        d->cn <<= 1;
+        d->s++;
+    }
+    d->v = 0xFFFFFFFFu / d->cn - 0x10000u;
+#endif
+}
+
+/* floor(x / c) for x < c 2^16. */
+static ZL_ALWAYS_INLINE uint32_t zl_div16_q(const zl_div16 *d, uint32_t x)
+{
+#if ZL_MUL32_ONLY
+    uint32_t xn = x << d->s, u1 = xn >> 16, u0 = xn & 0xFFFFu; /* u1 < cn: x << s < cn 2^16 */
+    uint32_t p = d->v * u1, q0 = (p & 0xFFFFu) + u0;
+    uint32_t q1 = (p >> 16) + u1 + (q0 >> 16), r;
+    q0 &= 0xFFFFu;
+    q1 = (q1 + 1u) & 0xFFFFu;
+    r = (u0 - q1 * d->cn) & 0xFFFFu;
+    if (r > q0) {
+        q1 = (q1 - 1u) & 0xFFFFu;
+        r = (r + d->cn) & 0xFFFFu;
+    }
+    if (r >= d->cn)
+        q1++;
+    return q1;
+#else
+    return x / d->c;
+#endif
+}
+
 /* A triangle's plane frame in 32 bits, for vertices within the int16 range
  * (every cached vertex): edge vectors, anchor offsets and the reciprocal of
  * |cross| (which must then be below 2^32). */
@@ -101,6 +166,11 @@ typedef struct {
     int neg;                    /* the cross product is negative */
     uint32_t c32;               /* |cross| */
     zl_div_inv inv;             /* its reciprocal, set only when c32 >= 2^16 */
+#if ZL_MUL32_ONLY
+    zl_div16 d16;               /* c32's zl_div16 when below 2^16 and the frame has a plane that
+                                   is not constant (else c = 0: round_div_small reads it only for
+                                   a numerator of c or more, which a constant plane has not) */
+#endif
 } small_frame;
 
 /* round(x / c) as muldiv_pow2 rounds, by the frame's reciprocal; 0 when
@@ -120,21 +190,31 @@ static ZL_ALWAYS_INLINE int round_div_inv(int64_t x, const small_frame *f, int64
 /*
  * The same rounding for a divisor below 2^16 (the cross product of a
  * triangle of fewer than 128 square pixels, most of a real mesh):
- * schoolbook division in two 16-bit digits, two 32-bit divisions and no
- * reciprocal. 0 under the same condition as round_div_inv (a quotient of
+ * schoolbook division in two 16-bit digits, two 32-bit divisions (without
+ * a divide instruction, two zl_div16_q of the frame's d16). 0 under the same condition as round_div_inv (a quotient of
  * 2^32 or more, which muldiv_pow2 might saturate), so the numerator is
  * below c 2^32 < 2^48.
  */
-static ZL_ALWAYS_INLINE int round_div_small(int64_t x, uint32_t c, int64_t *q)
+static ZL_ALWAYS_INLINE int round_div_small(int64_t x, const small_frame *f, int64_t *q)
 {
+    uint32_t c = f->c32;
     uint64_t m = x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
     uint64_t num = x < 0 ? m + (c - 1u - c / 2u) : m + c / 2u;
     uint32_t hi, q1, q0;
     if ((num >> 32) >= c)
         return 0;
-    hi = (uint32_t)(num >> 16);
+    hi = (uint32_t)(num >> 16); /* below c 2^16, as the remainder's 16 bits shifted in below */
+#if ZL_MUL32_ONLY
+    if (num < c) { /* a constant plane's (x = 0): no division */
+        *q = 0;
+        return 1;
+    }
+    q1 = zl_div16_q(&f->d16, hi);
+    q0 = zl_div16_q(&f->d16, ((hi - q1 * c) << 16) | (uint32_t)(num & 0xFFFFu));
+#else
     q1 = hi / c;
     q0 = (((hi - q1 * c) << 16) | (uint32_t)(num & 0xFFFFu)) / c; /* the remainder is below 2^16 */
+#endif
     m = ((uint64_t)q1 << 16) + q0;
     *q = x < 0 ? -(int64_t)m : (int64_t)m;
     return 1;
@@ -143,7 +223,7 @@ static ZL_ALWAYS_INLINE int round_div_small(int64_t x, uint32_t c, int64_t *q)
 /* round(x / |cross|) by the cheaper of the two ways. */
 static ZL_ALWAYS_INLINE int round_div_frame(int64_t x, const small_frame *f, int64_t *q)
 {
-    return f->c32 < 65536u ? round_div_small(x, f->c32, q) : round_div_inv(x, f, q);
+    return f->c32 < 65536u ? round_div_small(x, f, q) : round_div_inv(x, f, q);
 }
 
 /*

@@ -250,17 +250,30 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
                                                   int long_left, int32_t j, int32_t j_end, int32_t nl,
                                                   const zl_tiny_edge *se, uint8_t *color, int32_t color_stride,
                                                   uint8_t *depth, int32_t depth_stride, uint32_t *zrow,
-                                                  uint32_t *cr)
+                                                  uint32_t *cr, int32_t *lwalk)
 {
     const zl_tiny *tt = &tg->t;
     const int32_t dl = tt->lng.d, il = tt->lng.inc, ds = se->d, is = se->inc, width = ss->width;
     int32_t ns = se->n;
     uint32_t zr = *zrow, rr = cr[0], gr = cr[1], br = cr[2];
+#if ZL_MUL32_ONLY
+    /* the edges walked as tiny_rows walks them (lwalk: the long edge's x and remainder) */
+    int32_t xl = lwalk[0], rl = lwalk[1], xs = tiny_x(ns, ds), rs = xs * ds - ns;
+#else
+    (void)lwalk;
+#endif
     color += (size_t)j * (size_t)color_stride;
     depth += (size_t)j * (size_t)depth_stride;
     for (; j < j_end; j++) {
         int32_t x0, x1;
+#if ZL_MUL32_ONLY
+        x0 = long_left ? xl : xs;
+        x1 = long_left ? xs : xl;
+        x0 = x0 < 0 ? 0 : x0;
+        x1 = x1 > width ? width : x1;
+#else
         tiny_cols(nl, dl, ns, ds, long_left, width, &x0, &x1);
+#endif
         if (x0 < x1) {
             uint16_t *cp = (uint16_t *)(void *)color + x0, *zb = (uint16_t *)(void *)depth + x0;
             uint32_t dx = (uint32_t)(x0 - tt->ax);
@@ -268,20 +281,24 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
             uint32_t zq, r, g, b;
             v = v < tt->zlo ? tt->zlo : (v > tt->zhi ? tt->zhi : v);
             zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + tt->zbase;
-            r = colour_start(rr + dx * tg->cdx[0]);
-            g = colour_start(gr + dx * tg->cdx[1]);
-            b = colour_start(br + dx * tg->cdx[2]);
+            r = colour_start(rr + dx * tg->c.cdx[0]);
+            g = colour_start(gr + dx * tg->c.cdx[1]);
+            b = colour_start(br + dx * tg->c.cdx[2]);
             if (n <= ZL_SHORT_SPAN)
-                gouraud_short(cp, zb, n, zq, tt->dz14, r, g, b, tg->dl, func);
+                gouraud_short(cp, zb, n, zq, tt->dz14, r, g, b, tg->c.dl, func);
             else
-                gouraud_long(ss, cp, zb, n, zq, tt->dz14, r, g, b, tg->dc16);
+                gouraud_long(ss, cp, zb, n, zq, tt->dz14, r, g, b, tg->c.dc16);
         }
         nl += il;
         ns += is;
+#if ZL_MUL32_ONLY
+        tiny_walk(&xl, &rl, il, dl);
+        tiny_walk(&xs, &rs, is, ds);
+#endif
         zr += tt->zdy;
-        rr += tg->cdy[0];
-        gr += tg->cdy[1];
-        br += tg->cdy[2];
+        rr += tg->c.cdy[0];
+        gr += tg->c.cdy[1];
+        br += tg->c.cdy[2];
         color += color_stride;
         depth += depth_stride;
     }
@@ -289,7 +306,41 @@ static ZL_ALWAYS_INLINE int32_t tiny_gouraud_rows(const zl_tiny_gouraud *tg, con
     cr[0] = rr;
     cr[1] = gr;
     cr[2] = br;
+#if ZL_MUL32_ONLY
+    lwalk[0] = xl;
+    lwalk[1] = rl;
+#endif
     return nl;
+}
+
+/* One span of a ZL_KIND_TINY_GOURAUD record (its fields: ZL_KIND_TINY's),
+ * exactly tiny_gouraud_rows' span on that row. */
+static ZL_ALWAYS_INLINE void tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss,
+                                               unsigned func, int32_t x0, int32_t x1, uint8_t *crow, uint16_t *zrow)
+{
+    uint16_t *cp = (uint16_t *)(void *)crow + x0, *zb = zrow + x0;
+    uint32_t dx = (uint32_t)(x0 - a->ax);
+    int32_t v = (int32_t)((uint32_t)a->right.rem + dx * (uint32_t)a->left.rstep), n = x1 - x0;
+    int32_t zlo = (int32_t)a->zlo, zhi = (int32_t)a->zhi;
+    uint32_t zq, r, g, b;
+    v = v < zlo ? zlo : (v > zhi ? zhi : v);
+    zq = ((uint32_t)v >> (ZL_ATTR_FRAC - 14)) + (uint32_t)a->left.rem;
+    r = colour_start(tc->cr[0] + dx * tc->cdx[0]);
+    g = colour_start(tc->cr[1] + dx * tc->cdx[1]);
+    b = colour_start(tc->cr[2] + dx * tc->cdx[2]);
+    if (n <= ZL_SHORT_SPAN)
+        gouraud_short(cp, zb, n, zq, a->dz14, r, g, b, tc->dl, func);
+    else
+        gouraud_long(ss, cp, zb, n, zq, a->dz14, r, g, b, tc->dc16);
+}
+
+void zl_tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss, int32_t x0,
+                          int32_t x1, uint8_t *crow, uint16_t *zrow)
+{
+    if (ss->func == ZL_LESS)
+        tiny_gouraud_span(a, tc, ss, ZL_LESS, x0, x1, crow, zrow);
+    else
+        tiny_gouraud_span(a, tc, ss, ZL_LEQUAL, x0, x1, crow, zrow);
 }
 
 static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, unsigned func,
@@ -298,16 +349,20 @@ static ZL_ALWAYS_INLINE void tiny_gouraud_draw(const zl_tiny_gouraud *tg, const 
 {
     const zl_tiny *tt = &tg->t;
     uint32_t zrow = tt->zr, cr[3];
-    int32_t nl = tt->lng.n;
-    cr[0] = tg->cr[0];
-    cr[1] = tg->cr[1];
-    cr[2] = tg->cr[2];
+    int32_t nl = tt->lng.n, lwalk[2] = {0, 0};
+#if ZL_MUL32_ONLY
+    lwalk[0] = tiny_x(nl, tt->lng.d); /* tiny_walk's start: one division */
+    lwalk[1] = lwalk[0] * tt->lng.d - nl;
+#endif
+    cr[0] = tg->c.cr[0];
+    cr[1] = tg->c.cr[1];
+    cr[2] = tg->c.cr[2];
     if (tt->first < tt->mid)
         nl = tiny_gouraud_rows(tg, ss, func, long_left, tt->first, tt->mid, nl, &tt->up, color, color_stride, depth,
-                               depth_stride, &zrow, cr);
+                               depth_stride, &zrow, cr, lwalk);
     if (tt->mid < tt->end)
         (void)tiny_gouraud_rows(tg, ss, func, long_left, tt->mid, tt->end, nl, &tt->low, color, color_stride, depth,
-                                depth_stride, &zrow, cr);
+                                depth_stride, &zrow, cr, lwalk);
 }
 
 void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,

@@ -108,6 +108,12 @@ static int plane_fast(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t a1
     f.neg = pf->c < 0;
     f.c32 = pf->c32;
     f.inv = *pf->inv;
+#if ZL_MUL32_ONLY
+    if ((d1 | d2) != 0 && f.c32 < 65536u) /* round_div_small's reciprocal (see small_frame) */
+        zl_div16_init(&f.d16, f.c32);
+    else
+        zl_div16_none(&f.d16);
+#endif
     return plane_small(at, &f, a0, d1, d2);
 }
 

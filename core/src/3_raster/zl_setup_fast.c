@@ -51,7 +51,7 @@ static ZL_ALWAYS_INLINE int cached_rows(const zl_cached_vertex **v, uint16_t hei
  * |cross| (below 2^32) and its reciprocal where round_div_frame uses one,
  * and the anchor pixel of the sorted v0. Returns the anchor column. */
 static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cached_vertex *v0, int32_t first,
-                                                   int64_t cross)
+                                                   int64_t cross, int planes)
 {
     int32_t ax = zl_floor_shift32(v0->x, ZL_SUB_BITS), ay = zl_floor_shift32(v0->y, ZL_SUB_BITS);
     f->neg = cross < 0;
@@ -61,6 +61,15 @@ static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cach
     f->rows = first - ay;
     if (f->c32 >= 65536u) /* round_div_frame uses the reciprocal only then */
         zl_div_inv_init(&f->inv, f->c32);
+#if ZL_MUL32_ONLY
+    /* round_div_small's reciprocal, when a plane is not constant (planes) */
+    if (planes && f->c32 < 65536u)
+        zl_div16_init(&f->d16, f->c32);
+    else
+        zl_div16_none(&f->d16);
+#else
+    (void)planes;
+#endif
     return ax;
 }
 
@@ -117,7 +126,7 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
     if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
         !depth_diff32(v2->z, v0->z, &d2))
         return -1;
-    ax = small_frame_anchor(&f, v0, first, cross);
+    ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
     if (!plane_small(&t->z, &f, v0->z, d1, d2))
         return -1;
     t->kind = ZL_KIND_TRI;
@@ -222,6 +231,9 @@ static ZL_ALWAYS_INLINE void frame_out(small_frame *out, const small_frame *f)
     out->c32 = f->c32;
     if (f->c32 >= 65536u)
         out->inv = f->inv;
+#if ZL_MUL32_ONLY
+    out->d16 = f->d16;
+#endif
 }
 
 /* tiny_setup on v[0..2], which it sorts by y; with fout, its plane frame
@@ -262,7 +274,7 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
     if (mid < end)
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
-    ax = small_frame_anchor(&f, v0, first, cross);
+    ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
     if (!plane_small(&z, &f, v0->z, d1, d2))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
@@ -300,20 +312,27 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
 
 /*
  * round_div_small (zl_raster.h) of x = n 2^k, for |n| 2^(k - 16) < 2^31,
- * 16 <= k <= 24 and c < 2^16, in two 32-bit divisions: floor((|x| + bias)
- * / c) in 16-bit digits, (|n| << (k - 16)) / c for the high one, then the
- * remainder (below c) with 16 bits shifted in (below c 2^16 <= 2^32 with
- * the bias). 0 when the quotient might reach 2^31 (then the caller takes
+ * 16 <= k <= 24 and c < 2^16 (d: its zl_div16), in two 32-bit divisions:
+ * floor((|x| + bias) / c) in 16-bit digits, (|n| << (k - 16)) / c for the
+ * high one, then the remainder (below c) with 16 bits shifted in (below
+ * c 2^16 <= 2^32 with the bias). 0 when the quotient might reach 2^31 (then the caller takes
  * plane_small, whose limit is 2^32).
  */
-static ZL_ALWAYS_INLINE int round_div_shift(int32_t n, unsigned k, uint32_t c, int32_t *q)
+static ZL_ALWAYS_INLINE int round_div_shift(int32_t n, unsigned k, const zl_div16 *d, int32_t *q)
 {
-    uint32_t m = (n < 0 ? 0u - (uint32_t)n : (uint32_t)n) << (k - 16);
+    uint32_t c = d->c, m = (n < 0 ? 0u - (uint32_t)n : (uint32_t)n) << (k - 16);
     uint32_t bias = n < 0 ? c - 1u - c / 2u : c / 2u;
-    uint32_t q0 = m / c, u;
+    uint32_t q0, u;
+#if ZL_MUL32_ONLY
+    if (m >= c * ((1u << 15) - 1u)) /* q0 >= 2^15 - 1; below it m < c 2^16, as zl_div16_q needs */
+        return 0;
+    q0 = zl_div16_q(d, m);
+#else
+    q0 = m / c;
     if (q0 >= (1u << 15) - 1u)
         return 0;
-    u = (q0 << 16) + (((m - q0 * c) << 16) + bias) / c;
+#endif
+    u = (q0 << 16) + zl_div16_q(d, ((m - q0 * c) << 16) + bias);
     *q = n < 0 ? -(int32_t)u : (int32_t)u;
     return 1;
 }
@@ -327,17 +346,17 @@ static ZL_ALWAYS_INLINE int round_div_shift(int32_t n, unsigned k, uint32_t c, i
  * below 2^31). The row value modulo 2^32. 0 when a quotient is out of
  * round_div_shift's range.
  */
-static ZL_ALWAYS_INLINE int colour_plane_small(const small_frame *f, int32_t c0, int32_t e1, int32_t e2,
-                                               uint32_t *row, uint32_t *dx, uint32_t *dy)
+static ZL_ALWAYS_INLINE int colour_plane_small(const small_frame *f, const zl_div16 *d, int32_t c0, int32_t e1,
+                                               int32_t e2, uint32_t *row, uint32_t *dx, uint32_t *dy)
 {
     int32_t ga = e1 * f->dy2 - e2 * f->dy1, gb = f->dx1 * e2 - f->dx2 * e1, qx, qy, off;
     if (f->neg) {
         ga = -ga;
         gb = -gb;
     }
-    if (!round_div_shift(ga, ZL_SUB_BITS + ZL_ATTR_FRAC, f->c32, &qx) ||
-        !round_div_shift(gb, ZL_SUB_BITS + ZL_ATTR_FRAC, f->c32, &qy) ||
-        !round_div_shift(ga * f->ox + gb * f->oy, ZL_ATTR_FRAC, f->c32, &off))
+    if (!round_div_shift(ga, ZL_SUB_BITS + ZL_ATTR_FRAC, d, &qx) ||
+        !round_div_shift(gb, ZL_SUB_BITS + ZL_ATTR_FRAC, d, &qy) ||
+        !round_div_shift(ga * f->ox + gb * f->oy, ZL_ATTR_FRAC, d, &off))
         return 0;
     *dx = (uint32_t)qx;
     *dy = (uint32_t)qy;
@@ -345,22 +364,24 @@ static ZL_ALWAYS_INLINE int colour_plane_small(const small_frame *f, int32_t c0,
     return 1;
 }
 
-/* Colour channel ch of the sorted vertices' colours c into tg: 0 when it
- * needs the general set-up. */
-static ZL_ALWAYS_INLINE int colour_plane(zl_tiny_gouraud *tg, const small_frame *f, const uint8_t *const *c, int ch)
+/* Colour channel ch of the sorted vertices' colours c into tc: 0 when it
+ * needs the general set-up. d: the zl_div16 of f->c32 when that is below
+ * 2^16 (one reciprocal for the three channels). */
+static ZL_ALWAYS_INLINE int colour_plane(zl_tiny_colour *tc, const small_frame *f, const zl_div16 *d,
+                                         const uint8_t *const *c, int ch)
 {
     int32_t c0 = c[0][ch], e1 = (int32_t)c[1][ch] - c0, e2 = (int32_t)c[2][ch] - c0;
     zl_attr a;
-    if (f->c32 < 65536u && colour_plane_small(f, c0, e1, e2, &tg->cr[ch], &tg->cdx[ch], &tg->cdy[ch])) {
-        tg->dc16[ch] = (uint32_t)zl_floor_shift32((int32_t)tg->cdx[ch], ZL_ATTR_FRAC - 16);
+    if (f->c32 < 65536u && colour_plane_small(f, d, c0, e1, e2, &tc->cr[ch], &tc->cdx[ch], &tc->cdy[ch])) {
+        tc->dc16[ch] = (uint32_t)zl_floor_shift32((int32_t)tc->cdx[ch], ZL_ATTR_FRAC - 16);
         return 1;
     }
     if (!plane_small(&a, f, (int64_t)c0 << 16, e1 * 65536, e2 * 65536))
         return 0;
-    tg->cr[ch] = (uint32_t)(uint64_t)a.row;
-    tg->cdy[ch] = (uint32_t)(uint64_t)a.dy;
-    tg->cdx[ch] = (uint32_t)(uint64_t)a.dx;
-    tg->dc16[ch] = step32(a.dx, ZL_ATTR_FRAC - 16);
+    tc->cr[ch] = (uint32_t)(uint64_t)a.row;
+    tc->cdy[ch] = (uint32_t)(uint64_t)a.dy;
+    tc->cdx[ch] = (uint32_t)(uint64_t)a.dx;
+    tc->dc16[ch] = step32(a.dx, ZL_ATTR_FRAC - 16);
     return 1;
 }
 
@@ -374,12 +395,13 @@ static ZL_ALWAYS_INLINE int colour_plane(zl_tiny_gouraud *tg, const small_frame 
  * clamps. col[k] are the 3 bytes (r, g, b) of vertex v[k]. Same returns as
  * zl_tiny_setup.
  */
-int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v, const uint8_t *const *col,
-                          uint16_t height)
+static ZL_ALWAYS_INLINE int tiny_gouraud_setup(zl_tiny *tt, zl_tiny_colour *tc, const zl_cached_vertex *const *v,
+                                               const uint8_t *const *col, uint16_t height)
 {
     const zl_cached_vertex *s[3];
     const uint8_t *c[3];
     small_frame f;
+    zl_div16 d;
     int set, k, ch;
     s[0] = v[0];
     s[1] = v[1];
@@ -387,18 +409,33 @@ int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v,
     /* read only when set (|cross| >= 2^16), which GCC cannot follow here */
     f.inv.d = f.inv.v = 0;
     f.inv.shift = 0;
-    set = tiny_setup_v(&tg->t, s, height, &f);
+    set = tiny_setup_v(tt, s, height, &f);
     if (set <= 0)
         return set;
     for (k = 0; k < 3; k++) /* the colours in the sorted order */
         c[k] = s[k] == v[0] ? col[0] : (s[k] == v[1] ? col[1] : col[2]);
 
+#if ZL_MUL32_ONLY
+    d = f.d16; /* the depth plane's reciprocal serves the colour planes */
+    if (d.c == 0) { /* a constant depth plane made none; plane_small below may need it too */
+        zl_div16_init(&d, f.c32 < 65536u ? f.c32 : 1u);
+        f.d16 = d;
+    }
+#else
+    d.c = f.c32; /* read only when below 2^16 */
+#endif
     for (ch = 0; ch < 3; ch++) {
-        if (!colour_plane(tg, &f, c, ch))
+        if (!colour_plane(tc, &f, &d, c, ch))
             return -1;
-        tg->dl[ch] = zl_lane_step(tg->dc16[ch]);
+        tc->dl[ch] = zl_lane_step(tc->dc16[ch]);
     }
     return 1;
+}
+
+int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v, const uint8_t *const *col,
+                          uint16_t height)
+{
+    return tiny_gouraud_setup(&tg->t, &tg->c, v, col, height);
 }
 
 /* ---------------------------------------- small flat triangles, scanline mode */
@@ -412,6 +449,34 @@ static ZL_ALWAYS_INLINE void tiny_edge_in(zl_edge *e, const zl_tiny_edge *te)
     e->den = te->d;
 }
 
+/* A set-up zl_tiny into record r (ZL_KIND_TINY's layout), kind aside. */
+static ZL_ALWAYS_INLINE void tiny_record(zl_active *r, const zl_tiny *tt)
+{
+    tiny_edge_in(&r->left, &tt->lng);
+    if (tt->first < tt->mid) { /* only edges with rows were set up */
+        tiny_edge_in(&r->right, &tt->up);
+        if (tt->mid < tt->end)
+            tiny_edge_in(&r->lower, &tt->low);
+    } else {
+        tiny_edge_in(&r->right, &tt->low);
+    }
+    /* the 32-bit plane in the unused DDA fields: the row value steps with the
+     * short edge (right), so it is kept apart from lower (see ZL_KIND_TINY);
+     * the values are modulo 2^32 (tiny_depth), their bits kept as int32 */
+    r->left.rem = (int32_t)tt->zbase; /* below 2^31: (zlo >> 2) + 2^13 */
+    r->left.rstep = (int32_t)tt->zdx;
+    r->right.rem = (int32_t)tt->zr;
+    r->right.rstep = (int32_t)tt->zdy;
+    r->zlo = (uint32_t)tt->zlo;
+    r->zhi = (uint32_t)tt->zhi;
+    r->dz14 = tt->dz14;
+    r->ax = tt->ax;
+    r->row = (int16_t)tt->first;
+    r->mid = (int16_t)tt->mid;
+    r->end = (int16_t)tt->end;
+    r->lower_is_left = (uint8_t)tt->long_left;
+}
+
 int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                          uint16_t width, uint16_t height)
 {
@@ -422,28 +487,21 @@ int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cache
     if (set <= 0)
         return set;
     r->kind = ZL_KIND_TINY;
-    tiny_edge_in(&r->left, &tt.lng);
-    if (tt.first < tt.mid) { /* only edges with rows were set up */
-        tiny_edge_in(&r->right, &tt.up);
-        if (tt.mid < tt.end)
-            tiny_edge_in(&r->lower, &tt.low);
-    } else {
-        tiny_edge_in(&r->right, &tt.low);
-    }
-    /* the 32-bit plane in the unused DDA fields: the row value steps with the
-     * short edge (right), so it is kept apart from lower (see ZL_KIND_TINY);
-     * the values are modulo 2^32 (tiny_depth), their bits kept as int32 */
-    r->left.rem = (int32_t)tt.zbase; /* below 2^31: (zlo >> 2) + 2^13 */
-    r->left.rstep = (int32_t)tt.zdx;
-    r->right.rem = (int32_t)tt.zr;
-    r->right.rstep = (int32_t)tt.zdy;
-    r->zlo = (uint32_t)tt.zlo;
-    r->zhi = (uint32_t)tt.zhi;
-    r->dz14 = tt.dz14;
-    r->ax = tt.ax;
-    r->row = (int16_t)tt.first;
-    r->mid = (int16_t)tt.mid;
-    r->end = (int16_t)tt.end;
-    r->lower_is_left = (uint8_t)tt.long_left;
+    tiny_record(r, &tt);
+    return 1;
+}
+
+int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc, const zl_cached_vertex *const *v,
+                                 const uint8_t *const *col, uint16_t height)
+{
+    zl_tiny tt; /* in line: its fields go straight to the record, the colour planes to tc */
+    int set;
+    tt.low.n = tt.low.inc = tt.low.d = 0; /* set when they have rows: GCC cannot tell */
+    tt.up.n = tt.up.inc = tt.up.d = 0;
+    set = tiny_gouraud_setup(&tt, tc, v, col, height);
+    if (set <= 0)
+        return set;
+    r->kind = ZL_KIND_TINY_GOURAUD;
+    tiny_record(r, &tt);
     return 1;
 }

@@ -390,8 +390,16 @@ static uint32_t draw_plain_small(const zl_context *ctx, const zl_source *src, co
     return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, sc, 0);
 }
 
-/* A plain flat draw without the caller's cache, through ctx->draw_cache. */
-static void draw_small(zl_context *ctx, const zl_source *src, const zl_span_state *ss, const zl_vx *vx)
+/* draw_plain_small for a plain Gouraud draw (plain_gouraud). */
+static uint32_t draw_plain_small_gouraud(const zl_context *ctx, const zl_source *src, const zl_span_state *ss,
+                                         uint32_t t, int cull_sign, int tiny, const small_cache *sc)
+{
+    return draw_plain_body(ctx, src, ss, t, cull_sign, tiny, sc, 1);
+}
+
+/* A plain flat draw (or, with `gouraud`, a plain Gouraud draw) without the
+ * caller's cache, through ctx->draw_cache. */
+static void draw_small(zl_context *ctx, const zl_source *src, const zl_span_state *ss, const zl_vx *vx, int gouraud)
 {
     small_cache sc;
     uint32_t t, n = src->mesh->triangle_count;
@@ -403,6 +411,12 @@ static void draw_small(zl_context *ctx, const zl_source *src, const zl_span_stat
     sc.vx = vx;
     for (k = 0; k < ZL_DRAW_CACHE_SLOTS; k++)
         sc.tag[k] = (uint16_t)(k ^ 1u); /* never k's own index: every slot empty */
+    if (gouraud) {
+        for (t = draw_plain_small_gouraud(ctx, src, ss, 0, cull_sign, tiny, &sc); t < n;
+             t = draw_plain_small_gouraud(ctx, src, ss, t + 1, cull_sign, tiny, &sc))
+            draw_general(ctx, src, t, ss, 0);
+        return;
+    }
     for (t = draw_plain_small(ctx, src, ss, 0, cull_sign, tiny, &sc); t < n;
          t = draw_plain_small(ctx, src, ss, t + 1, cull_sign, tiny, &sc))
         draw_general(ctx, src, t, ss, 0);
@@ -477,11 +491,12 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
 #if ZL_DRAW_CACHE_SLOTS > 0
-    if (src.cache == NULL && plain_flat(ctx)) {
+    if (src.cache == NULL) {
+        int flat = plain_flat(ctx);
         /* the set-up in the context, not on the stack of the general path */
         zl_vx *vx = (zl_vx *)(void *)ctx->draw_setup;
-        if (zl_vx_prepare(&src, vx)) {
-            draw_small(ctx, &src, &ss, vx);
+        if ((flat || plain_gouraud(ctx, mesh)) && zl_vx_prepare(&src, vx)) {
+            draw_small(ctx, &src, &ss, vx, !flat);
             return ZL_OK;
         }
     }

@@ -151,21 +151,25 @@ static int culled_area_sign(const zl_state *st)
  * or perspective planes is one zl_tri_setup_flat record per cached
  * triangle (as frame mode's draw_cached), and its rows may take the RGB565
  * loop of render_row_plain. */
-static unsigned mesh_flags(const zl_frame_mesh *m, const zl_style *sty)
+static unsigned mesh_flags(const zl_frame *f, const zl_frame_mesh *m, const zl_style *sty)
 {
     const zl_span_state *ss = &m->span;
-    unsigned flags;
-    if (m->state.shading != ZL_SHADE_FLAT)
-        return 0;
+    int row565 = ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 &&
+                 ss->keep[1] == 0 && (ss->func == ZL_LESS || ss->func == ZL_LEQUAL);
     if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL ||
                         sty->offset_factor != 0 || sty->offset_units != 0 || sty->toon_bands != 0 ||
                         zl_style_needs_planes(sty)))
         return 0;
-    flags = MESH_FLAT;
-    if (ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
-        (ss->func == ZL_LESS || ss->func == ZL_LEQUAL))
-        flags |= MESH_ROW565;
-    return flags;
+    /* MESH_GOURAUD565: frame mode's plain_gouraud (zl_draw.c), without style
+     * records (render_row_plain's walks) and with a Gouraud slot a record */
+    if (m->state.shading == ZL_SHADE_GOURAUD)
+        return row565 && sty == NULL && f->ext == NULL && f->gouraud != NULL && !m->state.light_on &&
+                       m->mesh.vertex_colors != NULL
+                   ? MESH_GOURAUD565
+                   : 0;
+    if (m->state.shading != ZL_SHADE_FLAT)
+        return 0;
+    return row565 ? MESH_FLAT | MESH_ROW565 : MESH_FLAT;
 }
 
 /* zl_check_geometry, with the transform limits answered by transforming the
@@ -228,7 +232,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     m->tri_base = f->triangle_total;
     m->vert_base = f->vertex_count;
     set_ext(f, f->mesh_count, style, lines, omesh, outline);
-    m->flags = (uint8_t)((lines == NULL && outline == NULL ? mesh_flags(m, style_of(f, f->mesh_count)) : 0u) |
+    m->flags = (uint8_t)((lines == NULL && outline == NULL ? mesh_flags(f, m, style_of(f, f->mesh_count)) : 0u) |
                          (mvp != NULL ? MESH_MVP : 0u) | (cached ? MESH_CACHED : 0u));
     m->cull_code = (uint8_t)(culled_area_sign(state) + 1);
     f->mesh_count++;

@@ -25,6 +25,8 @@ struct zl_frame_mesh {
 #define MESH_FLAT 2u      /* plain flat fill: cached triangles set up by zl_tri_setup_flat */
 #define MESH_ROW565 4u    /* MESH_FLAT with RGB565 spans, depth LESS or LEQUAL written, every channel */
 #define MESH_CACHED 8u    /* its vertex cache entries were filled when it was added */
+#define MESH_GOURAUD565 16u /* plain Gouraud fill (vertex colours as they are) with MESH_ROW565's spans and
+                               Gouraud records: small cached triangles are ZL_KIND_TINY_GOURAUD records */
 
 /* Per-mesh record of the styled features (only with cfg.styled). */
 typedef struct {

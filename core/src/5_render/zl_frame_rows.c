@@ -122,6 +122,53 @@ static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_so
     return 1;
 }
 
+/* The colour planes of a ZL_KIND_TINY_GOURAUD record in slot `slot`: its
+ * zl_gouraud slot (f->gouraud, present in a MESH_GOURAUD565 frame). */
+typedef char zl_tiny_colour_fits[(sizeof(zl_tiny_colour) <= sizeof(zl_gouraud)) ? 1 : -1];
+static zl_tiny_colour *tiny_colour_of(const zl_frame *f, uint16_t slot)
+{
+    return (zl_tiny_colour *)(void *)(f->gouraud + (size_t)slot * sizeof(zl_gouraud));
+}
+
+/* Triangle t of a MESH_GOURAUD565 mesh, when its three vertices are cached
+ * inside and it is small: a ZL_KIND_TINY_GOURAUD record (frame mode's
+ * zl_tiny_gouraud_setup) inserted at *link. Returns 0, having done nothing,
+ * when the general path must take it. */
+static ZL_NOINLINE int activate_tiny_gouraud(zl_frame *f, uint8_t mi, const zl_source *s, uint32_t t, uint16_t *link)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    const uint16_t *idx = m->mesh.indices + t * 3u;
+    const uint8_t *vc = m->mesh.vertex_colors, *col[3];
+    const zl_cached_vertex *c[3];
+    uint16_t slot = f->free_head;
+    zl_active *a;
+    int set;
+    c[0] = s->cache + idx[0];
+    c[1] = s->cache + idx[1];
+    c[2] = s->cache + idx[2];
+    if (c[0]->x <= ZL_CACHE_INVALID || c[1]->x <= ZL_CACHE_INVALID || c[2]->x <= ZL_CACHE_INVALID)
+        return 0;
+    if (slot == ZL_LIST_END)
+        return 1; /* cannot happen: planning bounded the peak */
+    col[0] = vc + idx[0] * 3u;
+    col[1] = vc + idx[1] * 3u;
+    col[2] = vc + idx[2] * 3u;
+    a = &f->pool[slot];
+    set = zl_tiny_gouraud_setup_record(a, tiny_colour_of(f, slot), c, col, s->height);
+    if (set <= 0)
+        return set == 0; /* no rows: nothing, as the general path draws */
+#if ZL_MUL32_ONLY
+    tiny_walk_start(&a->left, &a->lower.rem);
+    tiny_walk_start(&a->right, &a->lower.rstep);
+#endif
+    f->free_head = a->next;
+    a->id = (uint16_t)(m->tri_base + t);
+    a->mesh = mi;
+    a->next = *link;
+    *link = slot;
+    return 1;
+}
+
 /* Set up the pieces of triangle `id` and insert them, in order, at *link
  * (where the render walk of the active list has reached the first record
  * with a greater id). */
@@ -225,6 +272,8 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
     unsigned k, n;
     source_of(f, m, &s);
     if ((m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, &poly, (m->flags & MESH_ROW565) != 0))
+        return;
+    if ((m->flags & MESH_GOURAUD565) && activate_tiny_gouraud(f, mi, &s, t, link))
         return;
     if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
         return;
@@ -404,7 +453,8 @@ static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint
             continue;
         }
         m = uniform ? &meshes[0] : &meshes[a->mesh];
-        if (a->kind == ZL_KIND_TINY) { /* only in MESH_ROW565 meshes */
+        if (a->kind == ZL_KIND_TINY || (!uniform && a->kind == ZL_KIND_TINY_GOURAUD)) {
+            /* only in MESH_ROW565 (MESH_GOURAUD565) meshes */
             int32_t x0, x1;
 #if ZL_MUL32_ONLY
             { /* tiny_cols with the walked columns (tiny_walk_start) */
@@ -415,7 +465,14 @@ static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint
 #else
             tiny_cols(a->left.x, a->left.den, a->right.x, a->right.den, a->lower_is_left, m->span.width, &x0, &x1);
 #endif
-            if (x0 < x1) {
+            if (!uniform && a->kind == ZL_KIND_TINY_GOURAUD) {
+                zl_tiny_colour *tc = tiny_colour_of(f, slot);
+                if (x0 < x1)
+                    zl_tiny_gouraud_span(a, tc, &m->span, x0, x1, crow, zrow);
+                tc->cr[0] += tc->cdy[0];
+                tc->cr[1] += tc->cdy[1];
+                tc->cr[2] += tc->cdy[2];
+            } else if (x0 < x1) {
                 if (uniform)
                     tiny_row(a, &m->span, func, x0, x1, crow, zrow);
                 else if (m->span.func == ZL_LESS)

@@ -186,7 +186,8 @@ int main(void)
             printf("golden: %s scanline mode failed\n", s.name);
             failed++;
         }
-        if (which == SCENE_BUNNY || which == SCENE_TETRA || which == SCENE_BUNNY_SMOOTH || which == SCENE_TEXTURED) {
+        if (which == SCENE_BUNNY || which == SCENE_TETRA || which == SCENE_BUNNY_SMOOTH || which == SCENE_TEXTURED ||
+            which == SCENE_BUNNY_GOURAUD) {
             memset(image, 0, sizeof image);
             if (render_bands(&s, 7) || save(prefix, s.name, "band7")) {
                 printf("golden: %s band mode failed\n", s.name);

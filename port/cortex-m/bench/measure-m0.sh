@@ -88,7 +88,7 @@ done >"$out/results.txt"
 
 R=$out/results.txt
 . port/cortex-m/bench/table-lib.sh
-scenes="bunny fill fill_gouraud tris"
+scenes="bunny fill fill_gouraud tris bunny_gouraud bunny_smooth"
 
 echo "### Summary, Cortex-M0 -O2 (README)"
 echo

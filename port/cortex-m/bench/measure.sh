@@ -124,7 +124,7 @@ done >"$out/results.txt"
 
 R=$out/results.txt
 . port/cortex-m/bench/table-lib.sh
-scenes="bunny fill fill_gouraud tris bunny_clip"
+scenes="bunny fill fill_gouraud tris bunny_clip bunny_gouraud bunny_smooth"
 
 echo "### Instructions per frame (exact: QEMU -icount, TIMER0), Cortex-M4 (mps2-an386)"
 echo

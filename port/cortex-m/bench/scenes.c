@@ -81,7 +81,7 @@ static int bunny_smooth(scene *s)
 {
     zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2};
     zl_lighting *lt = &s->lighting;
-    s->name = "bunny_smooth";
+    s->name = "bunny_specular";
     s->mesh = bunny_mesh;
     s->mesh.vertex_colors = NULL; /* the material is one colour */
     s->state.cull = ZL_CULL_BACK;
@@ -109,6 +109,66 @@ static int bunny_smooth(scene *s)
     lt->lights[1].diffuse.b = 110;
     s->normals = bunny_normals;
     s->lit = bunny_lit;
+    if (zl_light_vertices(lt, &s->modelview, &s->mesh, s->normals, s->lit) != ZL_OK)
+        return -1;
+    s->mesh.vertex_colors = s->lit;
+    return 0;
+}
+
+static uint8_t bunny_lit_one[3 * BUNNY_VERTEX_COUNT];
+static uint8_t bunny_vertex_colors[3 * BUNNY_VERTEX_COUNT];
+
+/* A colour channel from a model coordinate (the bunny is normalised to
+ * about [-1, 1]): 40 + (p + 1) * 100, clamped to 0..255. */
+static uint8_t channel_of(zl_fixed p)
+{
+    int32_t c = 40 + (int32_t)(((int32_t)p + ZL_FX_ONE) / 655);
+    return (uint8_t)(c < 0 ? 0 : c > 255 ? 255 : c);
+}
+
+/* SCENE_BUNNY_GOURAUD: the benchmark scene with a colour per vertex. */
+static int bunny_gouraud(scene *s)
+{
+    uint32_t i;
+    if (scene_make(s, SCENE_BUNNY) != 0)
+        return -1;
+    s->name = "bunny_gouraud";
+    s->state.light_on = 0;
+    s->state.shading = ZL_SHADE_GOURAUD;
+    s->gouraud = 1;
+    for (i = 0; i < 3u * BUNNY_VERTEX_COUNT; i++)
+        bunny_vertex_colors[i] = channel_of(bunny_positions[i]);
+    s->mesh.vertex_colors = bunny_vertex_colors;
+    return 0;
+}
+
+/* SCENE_BUNNY_LIT ("bunny_smooth"): the benchmark scene lit per vertex by
+ * zl_light_vertices with the flat bunny's light (ambient 40, material
+ * 230 200 160, one directional light, no specular), in eye space. */
+static int bunny_lit_scene(scene *s)
+{
+    zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2};
+    zl_lighting *lt = &s->lighting;
+    zl_mat4 mvp;
+    if (scene_make(s, SCENE_BUNNY) != 0 || camera_view(&mvp, &s->modelview, eye) != 0)
+        return -1;
+    s->name = "bunny_smooth";
+    s->mesh.vertex_colors = NULL;
+    s->state.light_on = 0;
+    s->state.shading = ZL_SHADE_GOURAUD;
+    s->gouraud = 1;
+    zl_lighting_default(lt);
+    lt->ambient.r = lt->ambient.g = lt->ambient.b = 40;
+    lt->material.r = 230;
+    lt->material.g = 200;
+    lt->material.b = 160;
+    lt->light_count = 1;
+    lt->lights[0].dir.x = ZL_FX_ONE * 3 / 8;
+    lt->lights[0].dir.y = ZL_FX_HALF;
+    lt->lights[0].dir.z = ZL_FX_ONE * 3 / 4;
+    lt->lights[0].diffuse.r = lt->lights[0].diffuse.g = lt->lights[0].diffuse.b = 215;
+    s->normals = bunny_normals;
+    s->lit = bunny_lit_one;
     if (zl_light_vertices(lt, &s->modelview, &s->mesh, s->normals, s->lit) != ZL_OK)
         return -1;
     s->mesh.vertex_colors = s->lit;
@@ -246,6 +306,10 @@ int scene_make(scene *s, int which)
         s->state.cull = ZL_CULL_NONE; /* the cut-open model's inside shows */
         return camera_view_near(&s->mvp, &view, eye, ZL_FX_ONE * 345 / 100);
     }
+    case SCENE_BUNNY_GOURAUD:
+        return bunny_gouraud(s);
+    case SCENE_BUNNY_LIT:
+        return bunny_lit_scene(s);
     default:
         return -1;
     }

@@ -13,7 +13,15 @@
  *   fill_gouraud the same with a colour per vertex, Gouraud shaded
  *   tris         triangle rate: a 64 x 64 grid, 8192 triangles of about 9
  *                pixels, covering the screen once, flat colour
- *   bunny_smooth (golden test and bench_smooth.c) the bunny's camera with
+ *   bunny_gouraud (issue 21) the benchmark scene with a colour per vertex
+ *                (made from the vertex's position in scene_make), Gouraud
+ *                shaded, no lighting
+ *   bunny_smooth (issue 21, SCENE_BUNNY_LIT) the benchmark scene lit per
+ *                vertex by zl_light_vertices: the flat bunny's ambient,
+ *                material and one directional light (eye space, no
+ *                specular), the vertex normals of zline-obj2c, Gouraud
+ *   bunny_specular (SCENE_BUNNY_SMOOTH; golden test and bench_smooth.c,
+ *                whose intervals keep the name bunny_smooth) the bunny's camera with
  *                smooth lighting (zl_light_vertices, issue 15): area-weighted
  *                normals from zline-obj2c, a key light with white Blinn-Phong
  *                specular (exponent 24) and a blue fill light, both in eye
@@ -48,7 +56,7 @@
 
 enum {
     SCENE_BUNNY, SCENE_FILL, SCENE_FILL_GOURAUD, SCENE_TRIS, SCENE_BUNNY_EXACT, SCENE_TETRA, SCENE_BUNNY_SMOOTH,
-    SCENE_TEXTURED, SCENE_BUNNY_CLIP, SCENE_COUNT
+    SCENE_TEXTURED, SCENE_BUNNY_CLIP, SCENE_BUNNY_GOURAUD, SCENE_BUNNY_LIT, SCENE_COUNT
 };
 
 /* The most meshes drawn after the first one (styled scenes). */
