@@ -114,9 +114,49 @@ static void blend_pixel(uint8_t *p, const zl_span_state *ss, unsigned mode, cons
     put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
-static inline int64_t persp_apply(int64_t a, uint64_t r)
+/* persp_apply for |a| >= 2^31, where a r leaves 64 bits: a = hi 2^31 + lo
+ * with 0 <= lo < 2^31, so floor(a r / 2^20) = hi r 2^11 + floor(lo r / 2^20)
+ * exactly (hi r 2^11 is a whole number). Exact for |a| < 2^51 (a texture
+ * coordinate of Q16.16 on a 4096-texel texture gives |a| < 2^41); beyond,
+ * saturated (fuzz_style's finding: a r overflowed, undefined behaviour). */
+static ZL_NOINLINE int64_t persp_apply_wide(int64_t a, uint64_t r)
+{
+    const int64_t lim = (int64_t)1 << 51;
+    int64_t hi, lo;
+    if (a >= lim || a <= -lim)
+        return a > 0 ? (int64_t)1 << 62 : -((int64_t)1 << 62);
+    hi = zl_floor_shift64(a, 31);
+    lo = a - hi * ((int64_t)1 << 31);
+    return hi * (int64_t)(r << 11) + (int64_t)(((uint64_t)lo * r) >> 20);
+}
+
+/* (a q) / q from the plane value a and r = persp_recip(q), for |a| < 2^31
+ * (then a r fits 64 bits: r <= 2^32). The spans that use it check their
+ * planes once (persp_fits). */
+static ZL_ALWAYS_INLINE int64_t persp_apply_fast(int64_t a, uint64_t r)
 {
     return zl_floor_shift64(a * (int64_t)r, 20);
+}
+
+/* persp_apply_fast for any a: the wide form where a leaves 31 bits. */
+static inline int64_t persp_apply(int64_t a, uint64_t r)
+{
+    if ((uint64_t)a + ((uint64_t)1 << 31) < ((uint64_t)1 << 32))
+        return persp_apply_fast(a, r);
+    return persp_apply_wide(a, r);
+}
+
+/* Whether a perspective plane a, stepped by da, stays within +-2^31 over n
+ * steps (linear: its ends bound it), so persp_apply_fast takes it. da is
+ * bounded first, so the product cannot overflow (n < 2^16). */
+static int persp_fits(int64_t a, int64_t da, int32_t n)
+{
+    const int64_t lim = (int64_t)1 << 31;
+    int64_t end;
+    if (a <= -lim || a >= lim || da <= -lim || da >= lim)
+        return 0;
+    end = a + (int64_t)n * da;
+    return end > -lim && end < lim;
 }
 
 /* Whether an affine coordinate plane (Q12 texels, stepped per pixel) stays
@@ -124,8 +164,11 @@ static inline int64_t persp_apply(int64_t a, uint64_t r)
 static int affine_fits(int64_t a, int64_t da, int32_t n)
 {
     const int64_t lim = (int64_t)1 << 30;
-    int64_t end = a + (int64_t)(n - 1) * da;
-    return a > -lim && a < lim && end > -lim && end < lim && da > -lim && da < lim;
+    int64_t end;
+    if (a <= -lim || a >= lim || da <= -lim || da >= lim)
+        return 0; /* da first: (n - 1) da cannot overflow after it */
+    end = a + (int64_t)(n - 1) * da;
+    return end > -lim && end < lim;
 }
 
 static inline uint16_t texel_at(const zl_texture *tex, int64_t u8, int64_t v8)
@@ -224,11 +267,11 @@ static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow
     const unsigned s = rp->s;
     const uint16_t *zend = zrow + n;
     uint64_t r = persp_recip(Q);
-    int64_t u8 = persp_apply(U, r), v8 = persp_apply(V, r);
+    int64_t u8 = persp_apply_fast(U, r), v8 = persp_apply_fast(V, r);
     while (zrow != zend) {
         int32_t m = zend - zrow < (int32_t)every ? (int32_t)(zend - zrow) : (int32_t)every;
         uint64_t r2 = persp_recip_near(r, Q + (int64_t)every * dQ); /* from the start's */
-        int64_t u8n = persp_apply(U + (int64_t)every * dU, r2), v8n = persp_apply(V + (int64_t)every * dV, r2);
+        int64_t u8n = persp_apply_fast(U + (int64_t)every * dU, r2), v8n = persp_apply_fast(V + (int64_t)every * dV, r2);
         /* conversion to unsigned is modulo 2^32: the low bits the masks read */
         uint32_t u = (uint32_t)(uint64_t)u8, v = (uint32_t)(uint64_t)v8 << s;
         uint32_t su = (uint32_t)(uint64_t)zl_floor_shift64(u8n - u8, shift);
@@ -271,7 +314,7 @@ static ZL_NOINLINE void span_persp1_repeat(uint32_t leq, const zl_repeat_pow2 *r
         r = persp_recip_near(r, Q);
         if (pass_lt_leq(d, zrow[i], leq)) {
             /* conversion to unsigned is modulo 2^32: the low bits the masks read */
-            uint32_t u = (uint32_t)(uint64_t)persp_apply(U, r), v = (uint32_t)(uint64_t)persp_apply(V, r) << s;
+            uint32_t u = (uint32_t)(uint64_t)persp_apply_fast(U, r), v = (uint32_t)(uint64_t)persp_apply_fast(V, r) << s;
             zrow[i] = (uint16_t)d;
             crow[i] = tx[((u & um) + (v & vm)) >> 8];
         }
@@ -366,7 +409,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         is_pow2(tex->width) &&
         is_pow2(tex->height) && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
-        (persp || (affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
+        (persp ? persp_fits(U, dU, n + (int32_t)every) && persp_fits(V, dV, n + (int32_t)every)
+               : affine_fits(U, dU, n) && affine_fits(V, dV, n))) {
         /* The common case in its own loop: the texel is the pixel (RGB565,
          * unlit, all channels), depth LESS or LEQUAL with writes; the same
          * values as the general loop below, computed with fewer steps. */
