@@ -14,6 +14,7 @@
  * model itself is checked against a hand-written byte stream first, and a
  * broken handover (DMA with one colour buffer) must make the comparison fail.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "unity.h"
@@ -73,6 +74,45 @@ static zl_panel_bus model_bus(int dma)
         b.write_wait = bus_write_wait;
     }
     return b;
+}
+
+/* --- fault injection: a bus that fails at a chosen byte ---------------------- */
+
+/* From byte fault_at on (counted over every write since arming) the bus
+ * drops what it is given, as a link that timed out would, until its status
+ * is read; the status reports the failure once. */
+static uint32_t fault_at, fault_sent;
+static int fault_armed, fault_dropping, fault_flag;
+
+static size_t fault_pass(size_t count)
+{
+    size_t pass = count;
+    if (fault_dropping)
+        return 0;
+    if (fault_armed && fault_sent + count > fault_at) {
+        pass = fault_at - fault_sent;
+        fault_armed = 0;
+        fault_dropping = 1;
+        fault_flag = 1;
+    }
+    fault_sent += (uint32_t)pass;
+    return pass;
+}
+static void fault_write(void *user, const uint8_t *bytes, size_t count)
+{
+    zt_panel_write(user, bytes, fault_pass(count));
+}
+static void fault_write_start(void *user, const uint8_t *bytes, size_t count)
+{
+    zt_panel_dma_start(user, bytes, fault_pass(count));
+}
+static int fault_status(void *user)
+{
+    int f = fault_flag;
+    (void)user;
+    fault_flag = 0;
+    fault_dropping = 0;
+    return f;
 }
 
 /* --- a scene: random Gouraud triangles in pixel space ------------------------ */
@@ -341,6 +381,86 @@ static void test_offset_area_in_a_mirrored_orientation(void)
     TEST_ASSERT_TRUE(model.ram[239][0] != 0xA5A5 || model.ram[0][239] != 0xA5A5);
 }
 
+/* One frame of s (w x h) into the window at (100, 60); the first error of
+ * the window, the bands and zl_panel_finish, in that order. */
+static zl_status fault_frame(zl_panel *p, const scene *s, int w, int h, uint16_t band_rows, uint8_t buffers)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_status st;
+    int r;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.width = (uint16_t)w;
+    cfg.height = (uint16_t)h;
+    cfg.band_rows = band_rows;
+    cfg.format = ZL_FORMAT_RGB565_BE;
+    cfg.color_buffers = buffers;
+    cfg.gouraud = 1;
+    cfg.max_meshes = 1;
+    cfg.max_vertices = NV;
+    cfg.max_triangles = NT;
+    cfg.max_active = 8 * NT;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, background, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &s->mesh, NULL, &s->state));
+    st = zl_panel_window(p, 100, 60, (uint16_t)w, (uint16_t)h);
+    if (st != ZL_OK)
+        return st;
+    r = zl_frame_render(&f, zl_panel_send_band, p);
+    st = zl_panel_finish(p);
+    return r != 0 ? (zl_status)r : st;
+}
+
+/* A bus failure at byte k of a frame, for every k of the window's commands
+ * and every step-th of its pixels (issue 26): the call that learns of it
+ * returns ZL_ERR_IO (a band, or zl_panel_finish for the last band's DMA),
+ * the panel is released with no transfer running, and the next frame on the
+ * same zl_panel draws the whole reference image over a poisoned RAM. */
+static void fault_frames(int dma, uint16_t band_rows, uint32_t step)
+{
+    enum { W = 40, H = 24 };
+    zl_panel_config c = zl_panel_config_st7789_240x240();
+    zl_panel_bus bus = model_bus(dma);
+    zl_panel p;
+    scene s;
+    uint32_t total, k;
+    uint8_t buffers = dma ? 2 : 1;
+    bus.write = fault_write;
+    if (dma)
+        bus.write_start = fault_write_start;
+    bus.status = fault_status;
+    scene_make(&s, 11u, W, H);
+    render_reference(&s, W, H);
+    fault_armed = fault_dropping = fault_flag = 0;
+    panel_start(&p, &c, &bus, 0);
+    fault_sent = 0;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, fault_frame(&p, &s, W, H, band_rows, buffers));
+    total = fault_sent;
+    TEST_ASSERT_TRUE(total > (uint32_t)W * H * 2u);
+    for (k = 0; k < total; k += k < 24u ? 1u : step) {
+        uint32_t i, j;
+        char what[80];
+        snprintf(what, sizeof what, "bus failing at byte %lu of %lu, DMA %d", (unsigned long)k,
+                 (unsigned long)total, dma);
+        fault_sent = 0;
+        fault_at = k;
+        fault_armed = 1;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_ERR_IO, fault_frame(&p, &s, W, H, band_rows, buffers), what);
+        TEST_ASSERT_EQUAL_UINT_MESSAGE(0, model.selected, what); /* released */
+        TEST_ASSERT_FALSE_MESSAGE(model.dma_busy, what);
+        for (j = 0; j < ZT_PANEL_RAM_H; j++)
+            for (i = 0; i < ZT_PANEL_RAM_W; i++)
+                model.ram[j][i] = 0x5A5A;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(ZL_OK, fault_frame(&p, &s, W, H, band_rows, buffers), what);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(0, differences(&c, 100, 60, W, H), what);
+    }
+}
+
+static void test_bus_failure_at_any_byte(void)
+{
+    fault_frames(1, 4, 37); /* DMA, two buffers: a band's failure seen at the next wait */
+    fault_frames(0, 5, 41); /* blocking writes: seen when the band's bytes are out */
+}
+
 static void test_partial_update_leaves_the_rest_untouched(void)
 {
     zl_panel_config c = zl_panel_config_ili9341_320x240();
@@ -505,6 +625,7 @@ int main(void)
     RUN_TEST(test_ili9341_320x240_landscape_full_frames);
     RUN_TEST(test_offset_area_in_a_mirrored_orientation);
     RUN_TEST(test_partial_update_leaves_the_rest_untouched);
+    RUN_TEST(test_bus_failure_at_any_byte);
     RUN_TEST(test_dma_with_one_colour_buffer_is_caught);
     RUN_TEST(test_padded_rows_are_sent_row_by_row);
     RUN_TEST(test_bad_input_sends_nothing);

@@ -81,6 +81,19 @@ static void command_delay(const zl_panel *p, uint8_t cmd, uint32_t ms)
     p->bus->delay_ms(p->bus->user, ms);
 }
 
+/* The bus's verdict on the transfers since the last check (bus->status):
+ * on a failure, release the panel and close the window, so that nothing of
+ * the failed frame is relied on and the next one starts afresh. */
+static zl_status bus_check(zl_panel *p)
+{
+    if (p->bus->status == NULL || p->bus->status(p->bus->user) == 0)
+        return ZL_OK;
+    p->bus->select(p->bus->user, 0);
+    p->windowed = 0;
+    p->in_flight = 0;
+    return ZL_ERR_IO;
+}
+
 /* Start (or, without DMA, do) a pixel transfer; D/C is already high. */
 static void send_pixels(zl_panel *p, const uint8_t *bytes, size_t count)
 {
@@ -152,7 +165,7 @@ zl_status zl_panel_init(zl_panel *p, const zl_panel_config *cfg, const zl_panel_
     command(p, CMD_NORON, NULL, 0);
     command(p, CMD_DISPON, NULL, 0);
     bus->select(bus->user, 0);
-    return ZL_OK;
+    return bus_check(p);
 }
 
 /* --- drawing ------------------------------------------------------------- */
@@ -187,7 +200,7 @@ zl_status zl_panel_window(zl_panel *p, uint16_t x, uint16_t y, uint16_t w, uint1
     p->win_h = h;
     p->next_row = 0;
     p->windowed = 1;
-    return ZL_OK;
+    return bus_check(p);
 }
 
 static zl_status band_check(const zl_panel *p, const zl_band *b)
@@ -213,6 +226,9 @@ int zl_panel_send_band(void *panel, const zl_band *band)
     /* The previous band's transfer must end before this one starts (one
      * DMA channel); zline is done with this band's buffer already. */
     wait_transfer(p);
+    s = bus_check(p); /* the window's commands or the previous band */
+    if (s != ZL_OK)
+        return s;
     if ((size_t)band->color_stride == row_bytes) {
         send_pixels(p, row, row_bytes * band->rows);
     } else {
@@ -224,7 +240,7 @@ int zl_panel_send_band(void *panel, const zl_band *band)
         }
     }
     p->next_row = (uint16_t)(p->next_row + band->rows);
-    return 0;
+    return p->in_flight ? 0 : bus_check(p); /* with DMA: at the next wait */
 }
 
 zl_status zl_panel_finish(zl_panel *p)
@@ -233,6 +249,8 @@ zl_status zl_panel_finish(zl_panel *p)
     if (p == NULL || p->bus == NULL)
         return ZL_ERR_ARG;
     wait_transfer(p);
+    if (bus_check(p) != ZL_OK)
+        return ZL_ERR_IO; /* released and closed */
     filled = p->windowed && p->next_row == p->win_h;
     p->bus->select(p->bus->user, 0);
     p->windowed = 0;

@@ -79,6 +79,15 @@ typedef struct {
     void (*write_wait)(void *user);
     /* Wait at least ms milliseconds. */
     void (*delay_ms)(void *user, uint32_t ms);
+    /* Optional (NULL: the bus cannot fail): nonzero when a transfer since the
+     * last call failed or timed out (the board's SPI error or timeout flag),
+     * which the call clears. Asked after the set-up, after a window's
+     * commands, once a band's bytes are out (with DMA: when the next band or
+     * zl_panel_finish waits for them) and in zl_panel_finish. On a failure
+     * the call returns ZL_ERR_IO, the panel is released (CS high) and the
+     * window closed: the next frame starts with zl_panel_window as usual
+     * (after a failed zl_panel_init, with zl_panel_init). */
+    int (*status)(void *user);
 } zl_panel_bus;
 
 /* Driver state: the caller owns it and never touches its fields. */

@@ -253,6 +253,8 @@ static const char *status_name(zl_status s)
         return "ZL_ERR_SIZE (bad buffer or dimension)";
     case ZL_ERR_CAPACITY:
         return "ZL_ERR_CAPACITY (the scene needs more than the frame was sized for)";
+    case ZL_ERR_IO:
+        return "ZL_ERR_IO (a display bus transfer failed)";
     }
     return "unknown status";
 }

@@ -274,4 +274,13 @@ MUTATIONS = [
      "(!tex_fits(uv[0]) || !tex_fits(1.0 - uv[1]))",
      "(!tex_fits(uv[0]))",
      "OBJ: a vt whose t = 1 - v leaves Q16.16 clamped silently"),
+    # --- the panel bus's failures (issue 26) ---------------------------------
+    ("panel-bus-failure-ignored", "zl_spi_panel.c",
+     "    if (p->bus->status == NULL || p->bus->status(p->bus->user) == 0)\n        return ZL_OK;",
+     "    if (p->bus->status == NULL || p->bus->status(p->bus->user) == 0 || 1)\n        return ZL_OK;",
+     "SPI panel: a failed bus transfer not reported"),
+    ("panel-bus-failure-keeps-cs", "zl_spi_panel.c",
+     "        return ZL_OK;\n    p->bus->select(p->bus->user, 0);\n    p->windowed = 0;",
+     "        return ZL_OK;\n    p->windowed = 0;",
+     "SPI panel: the panel left selected after a failed transfer"),
 ]

@@ -47,7 +47,8 @@ typedef enum {
     ZL_ERR_ARG = -1,        /* NULL pointer, unknown enum value, bad order of calls */
     ZL_ERR_RANGE = -2,      /* a number outside its documented range */
     ZL_ERR_SIZE = -3,       /* a buffer or dimension too small or too large */
-    ZL_ERR_CAPACITY = -4    /* the scene needs more than the frame was sized for */
+    ZL_ERR_CAPACITY = -4,   /* the scene needs more than the frame was sized for */
+    ZL_ERR_IO = -5          /* a display bus reported a failed or timed-out transfer (port/display) */
 } zl_status;
 
 /*

@@ -64,4 +64,5 @@ void arduino_spi_bus_begin(zl_panel_bus *bus, const ArduinoSpiPins *pins)
     bus->write_start = NULL; // blocking writes: one colour buffer
     bus->write_wait = NULL;
     bus->delay_ms = bus_delay_ms;
+    bus->status = NULL; // SPI.transfer cannot report a failure
 }
