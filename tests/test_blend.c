@@ -751,7 +751,14 @@ static void test_painter_order(void)
  * here with plain divisions.
  */
 enum { LW = 208, LH = 10 };
-static uint16_t long_col[LW * LH], long_dep[LW * LH], long_bg[LW * LH], long_zbg[LW * LH], long_zsrc[LW * LH];
+/* colour and depth 4-byte aligned (the rows then allow the pair loop) */
+static union {
+    uint32_t align;
+    uint16_t px[LW * LH];
+} long_col_u, long_dep_u;
+#define long_col long_col_u.px
+#define long_dep long_dep_u.px
+static uint16_t long_bg[LW * LH], long_zbg[LW * LH], long_zsrc[LW * LH];
 
 static unsigned widen565(unsigned v, unsigned k)
 {
