@@ -242,35 +242,44 @@ typedef struct {
     uint16_t r[32], g[64], b[32];
 } zl_blend_table565;
 
+/* Green of old values i and i + 32 (6 bits) widened to 8, as two lanes. */
+static ZL_ALWAYS_INLINE uint32_t green_pair(uint32_t i)
+{
+    return (((i + 32u) << 2 | (i + 32u) >> 4) << 16) | (i << 2) | (i >> 4);
+}
+
+/* The tables, 32 steps: red and blue of index i as two lanes, green of i
+ * and i + 32 as two lanes (each lane below 2^16, as in the loops above). */
 static void blend_table_build(zl_blend_table565 *t, unsigned mode, unsigned alpha, const unsigned *src)
 {
     uint32_t i, na = 255u - alpha;
     if (mode == ZL_BLEND_ADD) { /* blend_add_lanes: min(255, o + add) a channel */
-        uint32_t arb = ((uint32_t)div255(src[0] * alpha) << 16) | div255(src[2] * alpha), ag = div255(src[1] * alpha);
+        uint32_t arb = ((uint32_t)div255(src[0] * alpha) << 16) | div255(src[2] * alpha);
+        uint32_t ag2 = div255(src[1] * alpha) * UINT32_C(0x00010001);
         for (i = 0; i < 32u; i++) {
-            uint32_t w = (i << 3) | (i >> 2), rb = ((w << 16) | w) + arb;
-            uint32_t over = rb & UINT32_C(0x01000100);
+            uint32_t w = (i << 3) | (i >> 2), rb = ((w << 16) | w) + arb, g = green_pair(i) + ag2;
+            uint32_t over = rb & UINT32_C(0x01000100), gover = g & UINT32_C(0x01000100);
             rb = (rb | (over - (over >> 8))) & ZL_LANES_LO;
+            g = (g | (gover - (gover >> 8))) & ZL_LANES_LO;
             t->r[i] = (uint16_t)((rb >> 8) & 0xF800u);
             t->b[i] = (uint16_t)((rb & 0xFFu) >> 3);
-        }
-        for (i = 0; i < 64u; i++) {
-            uint32_t g = ((i << 2) | (i >> 4)) + ag;
-            t->g[i] = (uint16_t)(((g > 255u ? 255u : g) >> 2) << 5);
+            t->g[i] = (uint16_t)(((g & 0xFFu) >> 2) << 5);
+            t->g[i + 32u] = (uint16_t)((g >> 18) << 5);
         }
         return;
     }
     /* blend_alpha_lanes: div255(s a + o (255 - a)) a channel */
-    for (i = 0; i < 32u; i++) {
-        uint32_t wn = ((i << 3) | (i >> 2)) * na;
-        uint32_t q = div255_lanes_hi(((wn << 16) | wn) + ((uint32_t)(src[0] * alpha) << 16) + src[2] * alpha +
-                                     UINT32_C(0x00800080));
-        t->r[i] = (uint16_t)((q >> 16) & 0xF800u);
-        t->b[i] = (uint16_t)((q >> 11) & 0x1Fu);
-    }
-    for (i = 0; i < 64u; i++) {
-        uint32_t g = ((i << 2) | (i >> 4)) * na + src[1] * alpha + 128u;
-        t->g[i] = (uint16_t)(((g + (g >> 8)) >> 5) & 0x07E0u);
+    {
+        uint32_t srb = ((uint32_t)(src[0] * alpha) << 16) + src[2] * alpha + UINT32_C(0x00800080);
+        uint32_t sg2 = (src[1] * alpha + 128u) * UINT32_C(0x00010001);
+        for (i = 0; i < 32u; i++) {
+            uint32_t wn = ((i << 3) | (i >> 2)) * na;
+            uint32_t q = div255_lanes_hi(((wn << 16) | wn) + srb), g = div255_lanes_hi(green_pair(i) * na + sg2);
+            t->r[i] = (uint16_t)((q >> 16) & 0xF800u);
+            t->b[i] = (uint16_t)((q >> 11) & 0x1Fu);
+            t->g[i] = (uint16_t)((g >> 5) & 0x07E0u);
+            t->g[i + 32u] = (uint16_t)((g >> 21) & 0x07E0u);
+        }
     }
 }
 
