@@ -741,6 +741,103 @@ static void test_painter_order(void)
     TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_painter_order(&m, &mvp, out, keys, order));
 }
 
+/*
+ * Long flat blended spans into native RGB565 (zl_span_tex.c builds per-span
+ * channel tables from 64 pixels on; shorter spans take the lane loop): a
+ * triangle whose rows run from 200 pixels down to a few, depth varying
+ * along x, over random RGB565 pixels and stored depths that pass, tie or
+ * fail, in both modes, LESS and LEQUAL, with and without depth writes. The
+ * fragment depths come from an unblended capture; the colour is computed
+ * here with plain divisions.
+ */
+enum { LW = 208, LH = 10 };
+/* colour and depth 4-byte aligned (the rows then allow the pair loop) */
+static union {
+    uint32_t align;
+    uint16_t px[LW * LH];
+} long_col_u, long_dep_u;
+#define long_col long_col_u.px
+#define long_dep long_dep_u.px
+static uint16_t long_bg[LW * LH], long_zbg[LW * LH], long_zsrc[LW * LH];
+
+static unsigned widen565(unsigned v, unsigned k)
+{
+    unsigned c = k == 0 ? v >> 11 : (k == 1 ? (v >> 5) & 63u : v & 31u);
+    return k == 1 ? (c << 2) | (c >> 4) : (c << 3) | (c >> 2);
+}
+
+static void long_ctx(zl_context *c, uint16_t *col, uint16_t *dep)
+{
+    zl_target t;
+    zt_target_packed(&t, col, dep, LW, LH, ZL_FORMAT_RGB565);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(c, &t));
+}
+
+static void test_long_flat_spans_match_reference(void)
+{
+    static const zl_fixed lpos[9] = {ZL_FX_INT(1) / 3, 0, ZL_FX_INT(1) / 5, ZL_FX_INT(205), ZL_FX_INT(1) / 2, ZL_FX_INT(4) / 5,
+                                     0, ZL_FX_INT(LH), ZL_FX_INT(1) / 2};
+    zl_mesh m = {lpos, idx, NULL, NULL, 3, 1};
+    zl_rgb black = {0, 0, 0};
+    int n, i, changed = 0, long_rows = 0;
+    for (n = 0; n < 48; n++) {
+        zl_context c;
+        unsigned blend = n % 2 ? ZL_BLEND_ADD : ZL_BLEND_ALPHA, func = (n / 2) % 2 ? ZL_LEQUAL : ZL_LESS;
+        unsigned zwrite = (n / 4) % 2 == 0, a = n % 12 == 0 ? 255u : 1u + next_rand() % 255u, srcc[3], k;
+        long_ctx(&c, long_col, long_zsrc); /* the capture: fragment depths */
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&c, black, 65535));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&c, &m, NULL));
+        for (i = 0; i < LW * LH; i++) {
+            unsigned r = next_rand() % 4u, d = long_zsrc[i];
+            long_bg[i] = (uint16_t)next_rand();
+            long_zbg[i] = (uint16_t)(d == 65535 || r == 0 ? 65535u : (r == 1 ? d : (r == 2 && d > 0 ? d - 1u : 65535u)));
+        }
+        memcpy(long_col, long_bg, sizeof long_col);
+        memcpy(long_dep, long_zbg, sizeof long_dep);
+        long_ctx(&c, long_col, long_dep);
+        c.state.color.r = (uint8_t)next_rand();
+        c.state.color.g = (uint8_t)next_rand();
+        c.state.color.b = (uint8_t)next_rand();
+        c.state.depth_func = (uint8_t)func;
+        c.state.depth_write = (uint8_t)zwrite;
+        c.style.blend = (uint8_t)blend;
+        c.style.alpha = (uint8_t)a;
+        srcc[0] = c.state.color.r;
+        srcc[1] = c.state.color.g;
+        srcc[2] = c.state.color.b;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&c, &m, NULL));
+        for (i = 0; i < LW * LH; i++) {
+            unsigned d = long_zsrc[i], old = long_bg[i], out[3];
+            uint16_t expect = long_bg[i], zexp = long_zbg[i];
+            if (d != 65535 && (func == ZL_LESS ? d < long_zbg[i] : d <= long_zbg[i])) {
+                for (k = 0; k < 3; k++) {
+                    unsigned o = widen565(old, k), add = (srcc[k] * a + 127u) / 255u;
+                    out[k] = blend == ZL_BLEND_ALPHA ? (srcc[k] * a + o * (255u - a) + 127u) / 255u
+                                                     : (o + add > 255u ? 255u : o + add);
+                }
+                expect = (uint16_t)(((out[0] >> 3) << 11) | ((out[1] >> 2) << 5) | (out[2] >> 3));
+                if (zwrite)
+                    zexp = (uint16_t)d;
+            }
+            if (expect != long_col[i] || zexp != long_dep[i]) {
+                char msg[120];
+                snprintf(msg, sizeof msg, "case %d pixel (%d, %d): expected %04x z %u, got %04x z %u", n, i % LW, i / LW,
+                         expect, zexp, long_col[i], long_dep[i]);
+                TEST_FAIL_MESSAGE(msg);
+            }
+            changed += expect != long_bg[i];
+        }
+    }
+    for (i = 0; i < LH; i++) { /* rows of 64 pixels and more, and shorter ones */
+        int x, len = 0;
+        for (x = 0; x < LW; x++)
+            len += long_zsrc[i * LW + x] != 65535;
+        long_rows += len >= 64;
+    }
+    TEST_ASSERT_TRUE(long_rows >= 3 && long_rows < LH);
+    TEST_ASSERT_TRUE(changed > 48 * 500);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -750,5 +847,6 @@ int main(void)
     RUN_TEST(test_scanline_and_bands_identical_to_frame);
     RUN_TEST(test_blend_state_checked);
     RUN_TEST(test_painter_order);
+    RUN_TEST(test_long_flat_spans_match_reference);
     return UNITY_END();
 }

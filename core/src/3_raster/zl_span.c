@@ -48,49 +48,6 @@ static inline void span_flat_565(unsigned func, int clamp, uint16_t *crow, uint1
     }
 }
 
-/* Two pixels per step need little-endian 16-bit pairs in a 32-bit word. */
-static int little_endian(void)
-{
-    const uint16_t probe = 1;
-    uint8_t first;
-    memcpy(&first, &probe, 1);
-    return first == 1;
-}
-
-/* Tell the compiler a row pointer is 4-byte aligned (checked by the caller),
- * so that the memcpy of a pixel pair is one 32-bit load or store even where
- * unaligned access is not allowed (Cortex-M0). */
-#if defined(__GNUC__)
-#define ZL_ALIGNED4(p) __builtin_assume_aligned((p), 4)
-#else
-#define ZL_ALIGNED4(p) ((void *)(p))
-#endif
-
-/* Two 16-bit values at p as one 32-bit word (little-endian: p[0] low). The
- * memcpy is free of aliasing trouble and compiles to one load or store. */
-static ZL_ALWAYS_INLINE uint32_t pair_load(const uint16_t *p)
-{
-    uint32_t w;
-    memcpy(&w, ZL_ALIGNED4(p), 4);
-    return w;
-}
-
-static ZL_ALWAYS_INLINE void pair_store(uint16_t *p, uint32_t w)
-{
-    memcpy(ZL_ALIGNED4(p), &w, 4);
-}
-
-/* The pair loops keep depth as y = z << 2 (exact: z < 2^30 on an exact span),
- * so y's top half is the depth d, and both tests of a pair come straight from
- * the stored pair w: d0 against w's low half (y0 < s0 << 16 is d0 < s0),
- * d1 against its high half. */
-static ZL_ALWAYS_INLINE int pair_pass(unsigned func, uint32_t y0, uint32_t y1, uint32_t w)
-{
-    if (func == ZL_LESS)
-        return y0 < (w << 16) && (y1 >> 16) < (w >> 16);
-    return (y0 >> 16) <= (w & 0xFFFFu) && (y1 >> 16) <= (w >> 16);
-}
-
 /* One pixel of the pair loops, depth d. */
 static ZL_ALWAYS_INLINE void flat_pixel(unsigned func, uint16_t *c, uint16_t *zp, uint32_t d, uint16_t pixel)
 {

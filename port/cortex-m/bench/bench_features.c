@@ -17,6 +17,10 @@
  *   blend         the flat quad alpha-blended at constant alpha 128
  *   blend_add     the flat quad blended additively at constant alpha 128
  *   tex_bilinear  the textured quad (RGB565), affine, bilinear filtering
+ *   tex_persp_tilt, tex_persp16_tilt  perspective texture on a floor that
+ *                 recedes in depth (1/w varies along every row, so the
+ *                 per-pixel and per-16 reciprocals really divide; the quads
+ *                 above lie in the screen plane, where 1/w is constant)
  * Each count is one whole zl_draw_* call (setup included) divided by the
  * pixels written; the clear is not counted. Prints "FEATURE tag name
  * instructions pixels per_pixel_x100".
@@ -152,6 +156,43 @@ static int run_quad_blend(const char *name, int textured, unsigned mapping, unsi
     return report(name, bench_between(first, first + 1), written());
 }
 
+/* A floor 16 wide from 1.5 to 40 units ahead, 1 unit below the eye, seen
+ * through a 60 degree perspective: the lower half of the screen, texture
+ * repeated 8 x 20 times. Pixels are those of the clipped floor. */
+static const zl_fixed floor_pos[] = {ZL_FX_INT(-8), ZL_FX_INT(-1), -(ZL_FX_INT(3) / 2),
+                                     ZL_FX_INT(8),  ZL_FX_INT(-1), -(ZL_FX_INT(3) / 2),
+                                     ZL_FX_INT(8),  ZL_FX_INT(-1), ZL_FX_INT(-40),
+                                     ZL_FX_INT(-8), ZL_FX_INT(-1), ZL_FX_INT(-40)};
+static const zl_fixed floor_uv[] = {0, 0, ZL_FX_INT(8), 0, ZL_FX_INT(8), ZL_FX_INT(20), 0, ZL_FX_INT(20)};
+
+static int run_floor(const char *name, unsigned every)
+{
+    zl_mesh m = {floor_pos, quad_idx, NULL, NULL, 4, 2};
+    zl_texture tex;
+    zl_mat4 proj;
+    zl_status st;
+    unsigned first;
+    if (zl_mat4_perspective(&proj, ZL_ANGLE_TURN / 6, ZL_FX_INT(4) / 3, ZL_FX_INT(1), ZL_FX_INT(100)) != ZL_OK)
+        return 1;
+    memset(&tex, 0, sizeof tex);
+    tex.texels = texels;
+    tex.width = TS;
+    tex.height = TS;
+    tex.stride = TS;
+    reset();
+    ctx.style.texture = &tex;
+    ctx.style.texcoords = floor_uv;
+    ctx.style.tex_mapping = ZL_TEX_PERSPECTIVE;
+    ctx.style.tex_every = (uint8_t)every;
+    first = bench_stamp_count();
+    mark();
+    st = zl_draw_mesh(&ctx, &m, &proj);
+    mark();
+    if (st != ZL_OK)
+        return 1;
+    return report(name, bench_between(first, first + 1), written());
+}
+
 int main(void)
 {
     zl_target tg;
@@ -185,5 +226,8 @@ int main(void)
     failed += run_quad_blend("blend_add", 0, 0, 0, ZL_BLEND_ADD, 128);
     bilinear = 1;
     failed += run_quad("tex_bilinear", 1, ZL_TEX_AFFINE, 0);
+    bilinear = 0;
+    failed += run_floor("tex_persp_tilt", 0);
+    failed += run_floor("tex_persp16_tilt", 16);
     return failed;
 }
