@@ -455,6 +455,81 @@ static void test_capacity_error_before_any_row(void)
     TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_add_mesh(&f, &m, NULL, &st));
 }
 
+/* Many triangles a row each, few active on any row: planning's first rows
+ * do not all fit the spare work buffer (2 bytes a visible triangle against
+ * a few records and one band), so the second pass places the triangles the
+ * first marked visible. Some have a vertex beyond the cache's range (the
+ * clipping path) and every third faces away (culled): the bands must equal
+ * frame mode's image. */
+enum { TW = 160, TH = 300, TK = 3, TN = TH * TK };
+static zl_fixed tall_pos[TN * 9];
+static uint16_t tall_idx[TN * 3];
+static uint16_t tall_color[TW * TH], tall_depth[TW * TH];
+
+static void tall_scene(zl_mesh *m)
+{
+    int r, k;
+    for (r = 0; r < TH; r++) {
+        for (k = 0; k < TK; k++) {
+            int i = r * TK + k;
+            zl_fixed x = ZL_FX_INT(k * 50 + r % 7), y = ZL_FX_INT(r) + ZL_FX_ONE / 5;
+            zl_fixed far_x = (i % 11 == 5) ? ZL_FX_INT(3000) : x + ZL_FX_INT(40);
+            zl_fixed z = ZL_FX_ONE / 4 + (zl_fixed)(i * 37 % 1000) * 40;
+            zl_fixed tri[9] = {x, y, z, far_x, y + ZL_FX_ONE / 4, z, x + ZL_FX_INT(3), y + ZL_FX_ONE * 7 / 10, z};
+            memcpy(&tall_pos[i * 9], tri, sizeof tri);
+            tall_idx[i * 3] = (uint16_t)(i * 3);
+            tall_idx[i * 3 + 1] = (uint16_t)(i % 3 != 2 ? i * 3 + 2 : i * 3 + 1);
+            tall_idx[i * 3 + 2] = (uint16_t)(i % 3 != 2 ? i * 3 + 1 : i * 3 + 2);
+        }
+    }
+    memset(m, 0, sizeof *m);
+    m->positions = tall_pos;
+    m->indices = tall_idx;
+    m->vertex_count = TN * 3;
+    m->triangle_count = TN;
+}
+
+static void test_many_triangles_few_active(void)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_mesh m;
+    zl_state st;
+    zl_target t;
+    zl_context ctx;
+    zl_rgb bg = {9, 8, 7};
+    int y, drawn = 0;
+    tall_scene(&m);
+    zl_state_default(&st);
+    st.cull = ZL_CULL_BACK;
+    zt_target_packed(&t, tall_color, tall_depth, TW, TH, ZL_FORMAT_RGB565);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
+    ctx.state = st;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+    for (y = 0; y < TW * TH; y++)
+        drawn += tall_depth[y] != 65535;
+    TEST_ASSERT_GREATER_THAN(TW * TH / 8, drawn);
+    zt_frame_config_of(&cfg, TW, TH, 1, ZL_FORMAT_RGB565);
+    zt_frame_capacity(&cfg, 1, TN * 3, TN, 64);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &(zl_band){0}));
+    cfg.max_active = (uint16_t)zl_frame_needs(&f).active;
+    cfg.max_triangles = zl_frame_needs(&f).triangles;
+    /* the case under test: more visible triangles than first rows fit */
+    TEST_ASSERT_TRUE(cfg.max_triangles > 2 * TW + cfg.max_active * 64u);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    for (y = 0; y < TH; y++) {
+        zl_band b;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &b));
+        TEST_ASSERT_EQUAL_INT(y, b.first_row);
+        TEST_ASSERT_EQUAL_MEMORY(tall_color + (size_t)y * TW, b.color, TW * 2);
+        TEST_ASSERT_EQUAL_MEMORY(tall_depth + (size_t)y * TW, b.depth, TW * 2);
+    }
+}
+
 static void test_pull_form_and_double_buffering(void)
 {
     zl_frame_config cfg;
@@ -484,5 +559,6 @@ int main(void)
     RUN_TEST(test_sizes_are_exact_and_checked);
     RUN_TEST(test_capacity_error_before_any_row);
     RUN_TEST(test_pull_form_and_double_buffering);
+    RUN_TEST(test_many_triangles_few_active);
     return UNITY_END();
 }

@@ -385,7 +385,6 @@ static ZL_ALWAYS_INLINE int32_t gouraud_pair_run(unsigned func, uint16_t *cend, 
  * (nothing of that pair written), 0 at the end.
  */
 #if ZL_GOURAUD_ASM
-#define ZL_GOURAUD_ASM 1
 /* One pair of the run (r0 colour, r1 depth pointer; y, dy, r, g, b and
  * their steps in r4 .. r11, zl_gouraud_run's order): the tests TEST1 and
  * TEST2 branch to 2f on a failing pixel, before anything is written. */
