@@ -60,6 +60,8 @@ typedef enum {
 static inline int64_t zl_floor_shift64(int64_t n, unsigned shift)
 {
 #if ((-1) >> 1) == -1
+    /* implementation-defined, not undefined: the #if checked the arithmetic shift */
+    /* cppcheck-suppress shiftNegativeLHS */
     return n >> shift;
 #else
     int64_t d = (int64_t)1 << shift;
