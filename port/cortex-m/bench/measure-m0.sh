@@ -104,7 +104,7 @@ echo "### Instructions per pixel of the line and texture loops, Cortex-M0 -O2"
 echo
 echo "| loop | -O2 |"
 echo "|---|---:|"
-for f in line line_aa flat tex_affine tex_persp tex_persp16 tex_alpha blend blend_add tex_bilinear; do
+for f in line line_aa flat tex_affine tex_persp tex_persp16 tex_persp_tilt tex_persp16_tilt tex_alpha blend blend_add tex_bilinear; do
     echo "| $f | $(awk -v f="$f" '$1 == "FEATURE" && $3 == f { printf "%.1f", $6 / 100; exit }' "$out/features-O2.txt") |"
 done
 mism=$(awk '$3 ~ /_plugin_insn_mismatch$/' "$R")

@@ -201,7 +201,7 @@ echo "### Instructions per pixel of the line and texture loops (bench_features.c
 echo
 echo "| loop | -O2 | -Os |"
 echo "|---|---:|---:|"
-for f in line line_aa flat tex_affine tex_persp tex_persp16 tex_alpha blend blend_add tex_bilinear; do
+for f in line line_aa flat tex_affine tex_persp tex_persp16 tex_persp_tilt tex_persp16_tilt tex_alpha blend blend_add tex_bilinear; do
     per() { awk -v f="$f" '$1 == "FEATURE" && $3 == f { printf "%.1f", $6 / 100; exit }' "$out/features-$1.txt"; }
     echo "| $f | $(per O2) | $(per Os) |"
 done
