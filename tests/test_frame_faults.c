@@ -126,6 +126,18 @@ static void setUp_fresh(void)
     zt_guard_reset();
 }
 
+/* The next frame begun in the same zl_frame and work buffer is the fresh
+ * frame, and no guard byte moved; the arena is then free for the next case. */
+static void assert_next_frame_fresh(zl_frame *f, void *work)
+{
+    memset(got, 0xA5, sizeof got);
+    begin(f, work);
+    render_whole(f, got);
+    TEST_ASSERT_EQUAL_MEMORY(fresh, got, sizeof got);
+    assert_guards();
+    zt_guard_reset();
+}
+
 static void test_callback_error_at_every_band(void)
 {
     int k;
@@ -142,13 +154,7 @@ static void test_callback_error_at_every_band(void)
         /* The callback's own value comes back and stops the frame. */
         TEST_ASSERT_EQUAL_INT(CALLBACK_ERROR, zl_frame_render(&f, sink_fn, &s));
         TEST_ASSERT_EQUAL_INT(k + 1, s.calls);
-        /* The next frame in the same zl_frame and work buffer. */
-        memset(got, 0xA5, sizeof got);
-        begin(&f, work);
-        render_whole(&f, got);
-        TEST_ASSERT_EQUAL_MEMORY(fresh, got, sizeof got);
-        assert_guards();
-        zt_guard_reset();
+        assert_next_frame_fresh(&f, work);
     }
 }
 
@@ -165,12 +171,7 @@ static void test_pull_loop_abandoned_at_every_band(void)
         begin(&f, work);
         for (i = 0; i < k; i++)
             TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &band));
-        memset(got, 0xA5, sizeof got);
-        begin(&f, work);
-        render_whole(&f, got);
-        TEST_ASSERT_EQUAL_MEMORY(fresh, got, sizeof got);
-        assert_guards();
-        zt_guard_reset();
+        assert_next_frame_fresh(&f, work);
     }
 }
 
@@ -203,11 +204,7 @@ static void test_calls_out_of_order(void)
     TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_next_band(&f, NULL));
     TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_render(&f, NULL, NULL));
     /* And the same zl_frame renders the next frame as a fresh one does. */
-    memset(got, 0xA5, sizeof got);
-    begin(&f, work);
-    render_whole(&f, got);
-    TEST_ASSERT_EQUAL_MEMORY(fresh, got, sizeof got);
-    assert_guards();
+    assert_next_frame_fresh(&f, work);
 }
 
 void setUp(void) {}

@@ -195,12 +195,10 @@ static int logged_send(void *user, const zl_band *band)
     return zl_panel_send_band(log->panel, band);
 }
 
-/* Render s (w x h) in band mode into the panel's window at (x, y). */
-static void render_to_panel(zl_panel *p, const scene *s, int x, int y, int w, int h, uint16_t band_rows,
-                            uint8_t buffers, band_log *log)
+/* A frame of the scene (w x h) in bands of band_rows, begun in `work`. */
+static void begin_scene_frame(zl_frame *f, const scene *s, int w, int h, uint16_t band_rows, uint8_t buffers)
 {
     zl_frame_config cfg;
-    zl_frame f;
     memset(&cfg, 0, sizeof cfg);
     cfg.width = (uint16_t)w;
     cfg.height = (uint16_t)h;
@@ -213,8 +211,16 @@ static void render_to_panel(zl_panel *p, const scene *s, int x, int y, int w, in
     cfg.max_triangles = NT;
     cfg.max_active = 8 * NT;
     TEST_ASSERT_TRUE(zl_frame_bytes(&cfg) <= sizeof work);
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, background, 65535));
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &s->mesh, NULL, &s->state));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(f, &cfg, work, sizeof work, background, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(f, &s->mesh, NULL, &s->state));
+}
+
+/* Render s (w x h) in band mode into the panel's window at (x, y). */
+static void render_to_panel(zl_panel *p, const scene *s, int x, int y, int w, int h, uint16_t band_rows,
+                            uint8_t buffers, band_log *log)
+{
+    zl_frame f;
+    begin_scene_frame(&f, s, w, h, band_rows, buffers);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_panel_window(p, (uint16_t)x, (uint16_t)y, (uint16_t)w, (uint16_t)h));
     memset(log, 0, sizeof *log);
     log->panel = p;
@@ -385,23 +391,10 @@ static void test_offset_area_in_a_mirrored_orientation(void)
  * the window, the bands and zl_panel_finish, in that order. */
 static zl_status fault_frame(zl_panel *p, const scene *s, int w, int h, uint16_t band_rows, uint8_t buffers)
 {
-    zl_frame_config cfg;
     zl_frame f;
     zl_status st;
     int r;
-    memset(&cfg, 0, sizeof cfg);
-    cfg.width = (uint16_t)w;
-    cfg.height = (uint16_t)h;
-    cfg.band_rows = band_rows;
-    cfg.format = ZL_FORMAT_RGB565_BE;
-    cfg.color_buffers = buffers;
-    cfg.gouraud = 1;
-    cfg.max_meshes = 1;
-    cfg.max_vertices = NV;
-    cfg.max_triangles = NT;
-    cfg.max_active = 8 * NT;
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, background, 65535));
-    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &s->mesh, NULL, &s->state));
+    begin_scene_frame(&f, s, w, h, band_rows, buffers);
     st = zl_panel_window(p, 100, 60, (uint16_t)w, (uint16_t)h);
     if (st != ZL_OK)
         return st;
