@@ -194,12 +194,15 @@ static ZL_ALWAYS_INLINE uint32_t fill_pass(zl_frame *f, plan_pass *p, const zl_f
     uint16_t w = f->cfg.width, h = f->cfg.height;
     uint32_t t, count = m->mesh.triangle_count, n = p->n, id = m->tri_base + from;
     uint32_t max_visible = f->cfg.max_triangles, na = p->na, nkeys = p->na + p->nb;
-    const uint16_t *idx = m->mesh.indices + (size_t)from * 3u;
+    const uint16_t *idx;
     const zl_cached_vertex *cache = s->cache;
     uint16_t *row_start = f->row_start, *visible = f->visible;
     int32_t *diff = p->diff;
     uint8_t *seen = p->seen;
     int cull_sign = (int)m->cull_code - 1;
+    if (from >= count) /* an empty mesh may have no index array: no arithmetic on NULL */
+        return from;
+    idx = m->mesh.indices + (size_t)from * 3u;
     for (t = from; t < count; t++, id++, idx += 3) {
         int32_t first, end;
         const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
