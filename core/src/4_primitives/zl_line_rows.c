@@ -331,6 +331,57 @@ static int aa_row(zl_active *t, const zl_span_state *ss, uint8_t *crow, uint16_t
     return t->row < t->end;
 }
 
+/* Pixels j0 .. j1 - 1 of a run whose depth is the high word of zu + j dzu
+ * on each of them, columns ax0 + j DIR, all inside the row: the loop of
+ * line_run565 with the bounds test hoisted (the caller clipped j0 .. j1)
+ * and DIR a constant, so it keeps its values in registers. */
+static ZL_ALWAYS_INLINE void run565_pixel(uint16_t *crow, uint16_t *zrow, int32_t x, uint32_t d, uint16_t pixel)
+{
+    if (d < zrow[x]) {
+        zrow[x] = (uint16_t)d;
+        crow[x] = pixel;
+    }
+}
+
+static ZL_ALWAYS_INLINE void run565_inside(int dir, int32_t ax0, int32_t j0, int32_t j1, uint64_t zu, uint64_t dzu,
+                                           uint16_t *crow, uint16_t *zrow, uint16_t pixel)
+{
+    int32_t j = j0;
+    zu += (uint64_t)(uint32_t)j0 * dzu;
+    for (; j + 1 < j1; j += 2) { /* two a turn: the loop's test on half of them */
+        run565_pixel(crow, zrow, ax0 + dir * j, (uint32_t)(zu >> 32), pixel);
+        zu += dzu;
+        run565_pixel(crow, zrow, ax0 + dir * (j + 1), (uint32_t)(zu >> 32), pixel);
+        zu += dzu;
+    }
+    if (j < j1)
+        run565_pixel(crow, zrow, ax0 + dir * j, (uint32_t)(zu >> 32), pixel);
+}
+
+/* run565_inside for each direction, out of line so that its loop has the
+ * registers to itself (inlined into zl_prim_row it spilled the bound). */
+static ZL_NOINLINE void run565_forward(int32_t ax0, int32_t j0, int32_t j1, uint64_t zu, uint64_t dzu, uint16_t *crow,
+                                       uint16_t *zrow, uint16_t pixel)
+{
+    run565_inside(1, ax0, j0, j1, zu, dzu, crow, zrow, pixel);
+}
+
+static ZL_NOINLINE void run565_backward(int32_t ax0, int32_t j0, int32_t j1, uint64_t zu, uint64_t dzu, uint16_t *crow,
+                                        uint16_t *zrow, uint16_t pixel)
+{
+    run565_inside(-1, ax0, j0, j1, zu, dzu, crow, zrow, pixel);
+}
+
+/* The j with ax + j dir inside 0 .. width - 1, as [*j0, *j1) within 0 .. k. */
+static void run_inside(int32_t ax, int32_t dir, int32_t k, int32_t width, int32_t *j0, int32_t *j1)
+{
+    int32_t lo = dir > 0 ? -ax : ax - (width - 1), hi = dir > 0 ? width - ax : ax + 1;
+    *j0 = lo > 0 ? lo : 0;
+    *j1 = hi < k ? hi : k;
+    if (*j1 < *j0)
+        *j1 = *j0;
+}
+
 /* The pixels of an x-major run in row t->row of a line whose edge steps by
  * 0 (all but exact diagonals), from the run's first column (left.x is the
  * row), RGB565, LESS with writes: zl_prim_row's
@@ -350,16 +401,13 @@ static int line_run565(zl_active *t, int32_t width, uint16_t *crow, uint16_t *zr
     if (zb >= 0 && zb + (int64_t)(k - 1) * dzq >= 0 && zb < ((int64_t)65536 << 32) &&
         zb + (int64_t)(k - 1) * dzq < ((int64_t)65536 << 32)) {
         /* the high word is the depth on every pixel of the run */
-        uint64_t zu = (uint64_t)zb, dzu = (uint64_t)dzq;
-        for (j = 0; j < k; j++) {
-            uint32_t d = (uint32_t)(zu >> 32);
-            if ((uint32_t)ax < (uint32_t)width && d < zrow[ax]) {
-                zrow[ax] = (uint16_t)d;
-                crow[ax] = pixel;
-            }
-            ax += dir;
-            zu += dzu;
-        }
+        int32_t j0, j1;
+        run_inside(ax, dir, k, width, &j0, &j1);
+        if (dir > 0)
+            run565_forward(ax, j0, j1, (uint64_t)zb, (uint64_t)dzq, crow, zrow, pixel);
+        else
+            run565_backward(ax, j0, j1, (uint64_t)zb, (uint64_t)dzq, crow, zrow, pixel);
+        ax += k * dir;
     } else {
         for (j = 0; j < k; j++) {
             uint32_t d = line_depth(zq + (int64_t)j * dzq);

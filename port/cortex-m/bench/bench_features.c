@@ -62,9 +62,12 @@ static unsigned written(void)
 }
 
 /* Print a loop's count and check it against its budget (budgets.txt):
- * returns 1 when over budget, so a slower loop fails CTest. */
-static int report(const char *name, uint32_t insns, unsigned pixels)
+ * returns 1 when over budget, so a slower loop fails CTest. The INTERVAL
+ * line names the loop's marks for profile.sh (TAGS=features-O2 SCENE=line). */
+static int report(const char *name, unsigned first, unsigned pixels)
 {
+    uint32_t insns = bench_between(first, first + 1);
+    printf("INTERVAL %s %s total %lu %u %u\n", BENCH_TAG, name, (unsigned long)insns, first, first + 1);
     printf("FEATURE %s %s %lu %u %lu\n", BENCH_TAG, name, (unsigned long)insns, pixels,
            pixels ? (unsigned long)((uint64_t)insns * 100u / pixels) : 0ul);
     return bench_check_budget(BENCH_TAG, BENCH_BUDGETS, name, insns);
@@ -101,7 +104,7 @@ static int run_lines(int aa)
     if (st != ZL_OK)
         return 1;
     /* antialiased lines write no depth: count their columns instead */
-    return report(aa ? "line_aa" : "line", bench_between(first, first + 1), aa ? 239u * 320u : written());
+    return report(aa ? "line_aa" : "line", first, aa ? 239u * 320u : written());
 }
 
 /* A screen-filling quad in pixel space, texture repeated 4 x 3 times. */
@@ -153,7 +156,7 @@ static int run_quad_blend(const char *name, int textured, unsigned mapping, unsi
     mark();
     if (st != ZL_OK)
         return 1;
-    return report(name, bench_between(first, first + 1), written());
+    return report(name, first, written());
 }
 
 /* A floor 16 wide from 1.5 to 40 units ahead, 1 unit below the eye, seen
@@ -190,7 +193,7 @@ static int run_floor(const char *name, unsigned every)
     mark();
     if (st != ZL_OK)
         return 1;
-    return report(name, bench_between(first, first + 1), written());
+    return report(name, first, written());
 }
 
 int main(void)

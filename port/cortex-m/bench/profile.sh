@@ -12,7 +12,8 @@
 #
 #   port/cortex-m/bench/profile.sh [BUILD_DIR]  (env: SCENE=bunny TOP=20 KEY=total; KEY=total_vcache
 #   profiles the frame-mode frame drawn through the vertex cache; TAGS=smooth-O2 SCENE=bunny_smooth
-#   KEY=draw the bunny with per-vertex colours of bench_smooth.c)
+#   KEY=draw the bunny with per-vertex colours of bench_smooth.c; TAGS=features-O2 SCENE=line one per-pixel loop
+#   of bench_features.c (line, line_aa, tex_affine, blend, ...)
 #
 # CPU=cortex-m0 profiles the Cortex-M0 build instead (QEMU microbit, -icount
 # shift=7, the nRF51 timer: bench_timer_nrf51.c; the plugin's instruction
@@ -39,7 +40,7 @@ cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-e
     -DZLINE_CPU="$cpu" -DCMAKE_BUILD_TYPE=Release >/dev/null
 # bench_smooth is a Cortex-M4/M3 firmware only
 smooth=; [ "$cpu" = cortex-m0 ] || smooth=bench_smooth_O2
-cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 $smooth >/dev/null
+cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 bench_features_O2 $smooth >/dev/null
 if [ "$cpu" = cortex-m0 ]; then
     board="-M microbit -global nrf51-soc.flash-size=4194304 -global nrf51-soc.sram-size=4194304"; shift=7
 else
