@@ -421,15 +421,19 @@ static ZL_ALWAYS_INLINE void run565_inside(int dir, int32_t ax0, int32_t j0, int
                                            uint16_t *crow, uint16_t *zrow, uint16_t pixel)
 {
     int32_t j = j0;
-    zu += (uint64_t)(uint32_t)j0 * dzu;
-    for (; j + 1 < j1; j += 2) { /* two a turn: the loop's test on half of them */
+    if (j0 != 0) /* a run clipped on its left (rare): no 64-bit multiply otherwise, ARMv6-M calls one */
+        zu += (uint64_t)(uint32_t)j0 * dzu;
+    if (((j1 - j0) & 1) != 0) { /* the odd pixel first, so the pairs need no count after them */
+        run565_pixel(crow, zrow, ax0 + dir * j, (uint32_t)(zu >> 32), pixel);
+        zu += dzu;
+        j++;
+    }
+    for (; j < j1; j += 2) { /* two a turn: the loop's test on half of them */
         run565_pixel(crow, zrow, ax0 + dir * j, (uint32_t)(zu >> 32), pixel);
         zu += dzu;
         run565_pixel(crow, zrow, ax0 + dir * (j + 1), (uint32_t)(zu >> 32), pixel);
         zu += dzu;
     }
-    if (j < j1)
-        run565_pixel(crow, zrow, ax0 + dir * j, (uint32_t)(zu >> 32), pixel);
 }
 
 /* run565_inside for each direction, out of line so that its loop has the
