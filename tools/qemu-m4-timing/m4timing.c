@@ -7,7 +7,11 @@
  * choices below where the table gives a range.
  *
  *   qemu-system-arm ... -plugin path/m4timing.so,mark=0x1234,out=marks.txt[,p=2][,div=12]
- *       [,profile=FILE[,from=I,to=J]]
+ *       [,profile=FILE[,from=I,to=J]][,any=1]
+ *
+ * any=1 lets it load into another QEMU (qemu-system-avr for port/avr): its
+ * instruction counts hold for any CPU, its cycle estimates for none but the
+ * Cortex-M4.
  *
  * Cost model (cycles):
  *   data processing, moves, compares, shifts, extends, IT, hints     1
@@ -358,8 +362,13 @@ static void at_exit(qemu_plugin_id_t id, void *udata)
 
 QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *info, int argc, char **argv)
 {
-    int i;
-    if (info->version.cur < 1 || strcmp(info->target_name, "arm") != 0) {
+    int i, any_cpu = 0;
+    for (i = 0; i < argc; i++)
+        if (strcmp(argv[i], "any=1") == 0)
+            any_cpu = 1;
+    /* any=1: another CPU (port/avr counts AVR instructions so); the
+     * instruction counts hold for it, the cycle columns do not */
+    if (info->version.cur < 1 || (!any_cpu && strcmp(info->target_name, "arm") != 0)) {
         qemu_plugin_outs("m4timing: needs qemu-system-arm with plugin API version 1 (QEMU 7.2)\n");
         return -1;
     }
@@ -378,8 +387,10 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
             prof_from = strtol(argv[i] + 5, NULL, 0);
         else if (strncmp(argv[i], "to=", 3) == 0)
             prof_to = strtol(argv[i] + 3, NULL, 0);
+        else if (strcmp(argv[i], "any=1") == 0)
+            continue; /* taken above */
         else {
-            qemu_plugin_outs("m4timing: arguments: mark=ADDR out=FILE p=CYCLES div=CYCLES profile=FILE from=I to=J\n");
+            qemu_plugin_outs("m4timing: arguments: mark=ADDR out=FILE p=CYCLES div=CYCLES profile=FILE from=I to=J any=1\n");
             return -1;
         }
     }

@@ -5,6 +5,24 @@
 
 #include "zline/zl_fixed.h"
 
+/*
+ * The tables below in flash on AVR: avr-gcc copies const data to SRAM (a
+ * separate address space) unless it is placed in program memory and read
+ * with LPM, and their 1,284 bytes are a sixth of an ATmega2560's 8 KB
+ * (port/avr). avr-libc's PROGMEM and pgm_read_* do that; ZL_NO_PROGMEM
+ * keeps them in SRAM. Elsewhere these are plain const arrays and reads.
+ */
+#if defined(__AVR__) && !defined(ZL_NO_PROGMEM)
+#include <avr/pgmspace.h>
+#define ZL_TABLE PROGMEM
+#define TABLE_U8(t, i) pgm_read_byte(&(t)[i])
+#define TABLE_S32(t, i) ((int32_t)pgm_read_dword(&(t)[i]))
+#else
+#define ZL_TABLE
+#define TABLE_U8(t, i) ((t)[i])
+#define TABLE_S32(t, i) ((t)[i])
+#endif
+
 zl_status zl_fx_mul_checked(zl_fixed a, zl_fixed b, zl_fixed *out)
 {
     int64_t p = zl_floor_shift64((int64_t)a * b + 32768, 16);
@@ -124,7 +142,7 @@ uint32_t zl_isqrt64(uint64_t v)
 
 #if defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
 /* 16 sqrt(i + 1/2), rounded (255 at most): square roots of 8-bit mantissas. */
-static const uint8_t sqrt_start[256] = {
+static const uint8_t sqrt_start[256] ZL_TABLE = {
     11, 20, 25, 30, 34, 38, 41, 44, 47, 49, 52, 54, 57, 59, 61, 63,
     65, 67, 69, 71, 72, 74, 76, 78, 79, 81, 82, 84, 85, 87, 88, 90,
     91, 93, 94, 95, 97, 98, 99, 101, 102, 103, 104, 106, 107, 108, 109, 110,
@@ -159,7 +177,7 @@ uint32_t zl_isqrt32(uint32_t v)
         return v;
     len = 32u - clz32(v);
     e = len > 8 ? (len - 7u) & ~1u : 0u;
-    x = ((uint32_t)sqrt_start[v >> e] << (e >> 1)) >> 4; /* >= 1 */
+    x = ((uint32_t)TABLE_U8(sqrt_start, v >> e) << (e >> 1)) >> 4; /* >= 1 */
     x = (x + v / x) >> 1;
     if (x > 0xFFFFu)
         x = 0xFFFFu; /* floor(sqrt(2^32 - 1)); x * x must not wrap */
@@ -197,7 +215,7 @@ zl_fixed zl_fx_sqrt(zl_fixed a)
 }
 
 /* sin(i * quarter turn / 256) in Q16.16, i = 0..256 (generated, rounded). */
-static const int32_t sin_quarter[257] = {
+static const int32_t sin_quarter[257] ZL_TABLE = {
     0, 402, 804, 1206, 1608, 2010, 2412, 2814,
     3216, 3617, 4019, 4420, 4821, 5222, 5623, 6023,
     6424, 6824, 7224, 7623, 8022, 8421, 8820, 9218,
@@ -240,9 +258,9 @@ static zl_fixed sin_first_quarter(int32_t a)
     int32_t frac = a & 63;
     int32_t lo, hi;
     if (i >= 256)
-        return sin_quarter[256];
-    lo = sin_quarter[i];
-    hi = sin_quarter[i + 1];
+        return TABLE_S32(sin_quarter, 256);
+    lo = TABLE_S32(sin_quarter, i);
+    hi = TABLE_S32(sin_quarter, i + 1);
     return lo + (((hi - lo) * frac + 32) >> 6);
 }
 

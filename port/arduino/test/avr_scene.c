@@ -7,124 +7,16 @@
  * qemu-system-avr -M mega2560 (run-avr.sh), without the Arduino core: only
  * the USART registers, so the frames are zline's alone.
  */
-#include <avr/interrupt.h>
-#include <avr/io.h>
-#include <avr/sleep.h>
-
+#include "avr_board.h" /* port/avr: USART0, stack mark, QEMU work-arounds */
 #include "rotating_scene.h"
 #include "scene_checksum.h"
-
-
-/*
- * QEMU 7.2 (Debian 12) reads flash above 64 KB wrongly: its ELPM ignores
- * RAMPZ and reads the low 64 KB (checked with a 90 KB program: ELPM of
- * 0x16100 returns the bytes at 0x6100). avr-libc's start-up copies .data's
- * initial values from flash with ELPM, and with zline linked they lie above
- * 64 KB, so .data would start as garbage (on a real ATmega2560 it does
- * not). Here the start-up copy is left out (this empty __do_copy_data
- * replaces libgcc's) and run-avr.sh has QEMU load .data's image straight
- * into SRAM (-device loader). Nothing else in the program reads flash as
- * data above 64 KB (switch tables are placed low).
- */
-#ifdef SCENE_QEMU_DATA_PRELOAD
-__asm__(".section .init4,\"ax\",@progbits\n"
-        ".global __do_copy_data\n"
-        "__do_copy_data:\n"
-        ".text\n");
-#endif
-
-/*
- * QEMU 7.2 also loops forever on libgcc's __clzsi2 and __clzdi2 (count
- * leading zeros of 32 and 64 bits, behind __builtin_clzl/clzll): each
- * returns from a call into "SBRS rN, b; RET", and QEMU never leaves that
- * skip when it is taken (a ten-line program calling __builtin_clzl(0x1234)
- * hangs on -M mega2560 and -M uno alike). These replacements, linked
- * before libgcc, count the same bits without that pattern.
- */
-#ifdef SCENE_QEMU_DATA_PRELOAD
-int __clzsi2(unsigned long v) __attribute__((used));
-int __clzdi2(unsigned long long v) __attribute__((used));
-int __clzsi2(unsigned long v)
-{
-    int n = 0;
-    if (v == 0)
-        return 32;
-    while ((v & 0x80000000UL) == 0) {
-        v <<= 1;
-        n++;
-    }
-    return n;
-}
-int __clzdi2(unsigned long long v)
-{
-    unsigned long hi = (unsigned long)(v >> 32);
-    int n = __clzsi2(hi != 0 ? hi : (unsigned long)v);
-    return hi != 0 ? n : 32 + n;
-}
-#endif
-
-static void usart_put(char c)
-{
-    while (!(UCSR0A & (1 << UDRE0)))
-        ;
-    UDR0 = (uint8_t)c;
-}
-
-static void usart_puts(const char *s)
-{
-    while (*s)
-        usart_put(*s++);
-}
-
-static void usart_hex32(uint32_t v)
-{
-    static const char digits[] = "0123456789abcdef";
-    int8_t shift;
-    for (shift = 28; shift >= 0; shift -= 4)
-        usart_put(digits[(v >> shift) & 15u]);
-}
-
-static void usart_dec(uint16_t v)
-{
-    char buf[6];
-    uint8_t n = 0;
-    do {
-        buf[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v != 0);
-    while (n > 0)
-        usart_put(buf[--n]);
-}
-
-/* Stack high-water mark: main paints the free RAM between the end of .bss
- * and its own stack frame; after the frames, the first byte from the bottom
- * that changed shows how deep the stack went. */
-extern uint8_t __heap_start;
-#define STACK_PAINT 0xa5u
-
-static void stack_paint(void)
-{
-    uint8_t *p = &__heap_start;
-    uint8_t *top = (uint8_t *)SP - 64; /* leave main's frame alone */
-    while (p < top)
-        *p++ = STACK_PAINT;
-}
-
-static uint16_t stack_used(void)
-{
-    const uint8_t *p = &__heap_start;
-    while (p <= (const uint8_t *)RAMEND && *p == STACK_PAINT)
-        p++;
-    return (uint16_t)((const uint8_t *)RAMEND + 1 - p);
-}
 
 int main(void)
 {
     static uint64_t work[ROTATING_SCENE_WORK_WORDS] ROTATING_SCENE_ALIGN8;
     uint16_t i;
     stack_paint();
-    UBRR0 = 8; /* 115200 baud at 16 MHz (QEMU ignores the rate) */
-    UCSR0B = (uint8_t)(1 << TXEN0);
+    usart_init();
     {
         zl_frame_config cfg;
         rotating_scene_config(&cfg);
@@ -150,7 +42,6 @@ int main(void)
     usart_dec(stack_used());
     usart_puts(" bytes at most\n");
     usart_puts("done\n");
-    cli();
-    for (;;)
-        sleep_mode();
+    board_halt();
+    return 0;
 }

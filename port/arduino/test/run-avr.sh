@@ -34,7 +34,7 @@ trap cleanup EXIT INT TERM
 # AVR emulation (ELPM above 64 KB, a skipped RET); see there.
 avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w \
     -ffunction-sections -fdata-sections -flto \
-    -I"$top/core/include" -I"$top/port/arduino/examples/RotatingModel" -I"$top/port/arduino/test" \
+    -I"$top/core/include" -I"$top/port/arduino/examples/RotatingModel" -I"$top/port/arduino/test" -I"$top/port/avr" \
     "$top/port/arduino/test/avr_scene.c" "$top/port/arduino/examples/RotatingModel/rotating_scene.c" \
     $(find "$top/core/src" -name '*.c' | sort) \
     -Wl,--gc-sections -o "$work/fw.elf"
