@@ -68,6 +68,23 @@
 #endif
 
 /*
+ * ZL_SMALL_TRIANGLE_SETUP: 1 lets small triangles take the compact 32-bit
+ * set-up of zl_setup_fast.c (zl_tiny_*), 0 sends them to the general one
+ * (the same pixels). Default 1 where int has 32 bits or more, 0 where it has
+ * 16 (AVR, MSP430): there the set-up's 32-bit products are library calls, it
+ * costs about 54 KB of ATmega2560 code at -Os, and before issue 23 a 16-bit
+ * shift in its range check (1u << 25) kept it unreachable there anyway.
+ */
+#ifndef ZL_SMALL_TRIANGLE_SETUP
+#include <limits.h>
+#if INT_MAX > 32767
+#define ZL_SMALL_TRIANGLE_SETUP 1
+#else
+#define ZL_SMALL_TRIANGLE_SETUP 0
+#endif
+#endif
+
+/*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library
  * validates every argument itself and returns an error); define it to your
  * platform's assert to catch bugs in zline during development.
