@@ -718,20 +718,31 @@ typedef struct {
      * it, never the target. */
     void *vertex_cache;
     size_t vertex_cache_bytes;
-#if ZL_DRAW_CACHE_SLOTS > 0
-    /* Without that cache, zl_draw_mesh keeps the window vertices of recent
-     * triangles here (ZL_DRAW_CACHE_SLOTS in zl_config.h: 10 bytes a slot,
-     * 10240 bytes by default, plus 144 for the transform set-up: 10384
-     * bytes; the same pixels either way). Library scratch,
-     * rewritten by every draw: do not touch. */
-    int64_t draw_setup[18]; /* the draw's transform set-up (off the stack) */
-    uint32_t draw_cache[2 * ZL_DRAW_CACHE_SLOTS];
-    uint16_t draw_cache_tag[ZL_DRAW_CACHE_SLOTS];
-#endif
+    /* Optional draw cache for zl_draw_mesh (NULL after zl_init): without
+     * the vertex cache above, a plain flat or Gouraud draw keeps the window
+     * vertices of recent triangles here, a direct-mapped cache of
+     * ZL_DRAW_CACHE_SLOTS entries (zl_config.h) after the draw's transform
+     * set-up. It needs zl_draw_cache_bytes() bytes (10,384 with the default
+     * 1024 slots), 8-byte aligned (declare it as uint64_t[]; where uint64_t
+     * is aligned to less, as on AVR, add __attribute__((aligned(8)))). NULL,
+     * a smaller or a misaligned cache is not used: each triangle then
+     * transforms and clips its own three vertices (the general path:
+     * slower, the same pixels). Library scratch, rewritten by every draw. */
+    void *draw_cache;
+    size_t draw_cache_bytes;
 } zl_context;
 
 /* Bytes of vertex cache for n vertices (scanline mode uses the same entries). */
 #define ZL_VERTEX_CACHE_BYTES(n) ((size_t)(n) * 8u)
+/* Bytes of draw cache for a library built with ZL_DRAW_CACHE_SLOTS = slots:
+ * the transform set-up (144 bytes), then 8 bytes of window vertex and a
+ * 2-byte tag a slot; 0 for 0 slots (no draw cache). */
+#define ZL_DRAW_CACHE_SETUP_BYTES 144u
+#define ZL_DRAW_CACHE_BYTES(slots) \
+    ((slots) > 0 ? ZL_DRAW_CACHE_SETUP_BYTES + (size_t)(slots) * 10u : (size_t)0)
+/* The draw cache this library uses: ZL_DRAW_CACHE_BYTES of the
+ * ZL_DRAW_CACHE_SLOTS it was built with (0: it has none). */
+size_t zl_draw_cache_bytes(void);
 
 /* Check the target and set the default state and style. */
 zl_status zl_init(zl_context *ctx, const zl_target *target);
