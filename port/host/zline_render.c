@@ -258,6 +258,10 @@ static const char *status_name(zl_status s)
         return "ZL_ERR_CAPACITY (the scene needs more than the frame was sized for)";
     case ZL_ERR_IO:
         return "ZL_ERR_IO (a display bus transfer failed)";
+    case ZL_ERR_ABI:
+        return "ZL_ERR_ABI (the tool and the library were built with different configuration)";
+    case ZL_ERR_UNSUPPORTED:
+        return "ZL_ERR_UNSUPPORTED (a feature this library build leaves out)";
     }
     return "unknown status";
 }

@@ -42,7 +42,7 @@ static zl_status check_target(const zl_target *t)
     return ZL_OK;
 }
 
-zl_status zl_init(zl_context *ctx, const zl_target *target)
+zl_status(zl_init)(zl_context *ctx, const zl_target *target)
 {
     zl_status st;
     if (ctx == NULL || target == NULL)

@@ -350,6 +350,7 @@ static int run_scene(const scene *s)
     stage_rows(s, &ctx, counts);
     printf("RESULT %s %s triangles %u\n", BENCH_TAG, s->name, (unsigned)s->mesh.triangle_count);
     printf("RESULT %s %s vertices_x8 %u\n", BENCH_TAG, s->name, (unsigned)ZL_VERTEX_CACHE_BYTES(s->mesh.vertex_count));
+    printf("RESULT %s %s draw_cache_bytes %u\n", BENCH_TAG, s->name, (unsigned)zl_draw_cache_bytes());
     printf("RESULT %s %s drawn %lu\n", BENCH_TAG, s->name, (unsigned long)counts[0]);
     printf("RESULT %s %s pixels %lu\n", BENCH_TAG, s->name, (unsigned long)counts[1]);
     printf("RESULT %s %s stack %lu\n", BENCH_TAG, s->name, (unsigned long)stack);
