@@ -11,6 +11,7 @@
  * draw), and never touches one that is too small or misaligned, or any
  * byte past the size it asked for.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "unity.h"
@@ -29,6 +30,7 @@ static uint64_t arena[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 8];
 
 static void test_context_fits_one_kilobyte(void)
 {
+    printf("sizeof(zl_context) = %u bytes\n", (unsigned)sizeof(zl_context));
     TEST_ASSERT_LESS_OR_EQUAL(1024, sizeof(zl_context));
 }
 
