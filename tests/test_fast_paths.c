@@ -16,15 +16,17 @@
  * edges, and the four combinations of LESS / LEQUAL with back-face culling
  * on and off.
  *
- * Without a caller cache, zl_draw_mesh keeps recent window vertices in its
- * own direct-mapped cache (ZL_DRAW_CACHE_SLOTS, zl_context.draw_cache) and
- * takes the same fast path. test_shared_vertices draws a mesh whose
- * triangles share vertices, more vertices than slots and triangles whose
- * vertices fight for one slot, through a matrix, some vertices beyond the
- * near and far planes (the clipping path): with the caller's cache and
- * without it. This file is also built against a library with
- * ZL_DRAW_CACHE_SLOTS=0 (test_fast_paths_general): there the draw without
- * a cache is the general path, so both checks compare fast against general.
+ * Without a vertex cache but with a draw cache (zl_context.draw_cache,
+ * zl_draw_cache_bytes() bytes), zl_draw_mesh keeps recent window vertices
+ * in a direct-mapped cache of ZL_DRAW_CACHE_SLOTS slots there and takes the
+ * same fast path; with neither, the general path. test_shared_vertices
+ * draws a mesh whose triangles share vertices, more vertices than slots and
+ * triangles whose vertices fight for one slot, through a matrix, some
+ * vertices beyond the near and far planes (the clipping path): with the
+ * vertex cache, with the draw cache and with neither. This file is also
+ * built against a library with ZL_DRAW_CACHE_SLOTS=0
+ * (test_fast_paths_general): there a draw cache is not used, so the draw
+ * with it is the general path too.
  */
 #include <string.h>
 
@@ -53,6 +55,8 @@ static uint16_t idx[NT * 3];
 static uint8_t fcol[NT * 3];
 static uint16_t color_a[W * H], color_b[W * H], depth_a[W * H], depth_b[W * H];
 static uint32_t vcache[NV * 2]; /* ZL_VERTEX_CACHE_BYTES(NV) */
+/* zl_draw_mesh's draw cache, one byte more than the library needs */
+static uint64_t draw_cache[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
 
 /* A depth in Q16.16 (0 .. 1 in pixel space): kind 0 anywhere, 1 near the
  * far end, 2 near 0, 3 anywhere beyond the range (clipped to it). */
@@ -104,11 +108,14 @@ static void random_mesh(int depth_kind, int wide)
     }
 }
 
+enum { NO_DRAW_CACHE, WITH_DRAW_CACHE };
+
 /* Draw m twice over a cleared RGB565 target, through the vertex cache
- * `cache` when given (NULL: the general path). The second draw ties every
- * fragment, and the cache starts empty again for it. */
-static void draw_twice(uint16_t *color, uint16_t *depth, void *cache, size_t cache_bytes, const zl_state *st,
-                       const zl_mesh *m, const zl_mat4 *mvp)
+ * `cache` when given, else through the draw cache when asked (neither: the
+ * general path). The second draw ties every fragment, and the cache starts
+ * empty again for it. */
+static void draw_twice(uint16_t *color, uint16_t *depth, void *cache, size_t cache_bytes, int with_draw_cache,
+                       const zl_state *st, const zl_mesh *m, const zl_mat4 *mvp)
 {
     zl_target tg;
     zl_context ctx;
@@ -120,6 +127,10 @@ static void draw_twice(uint16_t *color, uint16_t *depth, void *cache, size_t cac
     if (cache != NULL) {
         ctx.vertex_cache = cache;
         ctx.vertex_cache_bytes = cache_bytes;
+    }
+    if (with_draw_cache) {
+        ctx.draw_cache = draw_cache;
+        ctx.draw_cache_bytes = sizeof draw_cache;
     }
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, m, mvp));
@@ -144,10 +155,13 @@ static void test_cached_small_triangles_equal_the_general_path(void)
         st.cull = (scene & 2) ? ZL_CULL_BACK : ZL_CULL_NONE;
         st.light_on = (uint8_t)((scene >> 2) & 1);
         random_mesh((scene >> 3) & 3, (scene >> 5) & 1);
-        draw_twice(color_a, depth_a, vcache, sizeof vcache, &st, &m, NULL);
-        draw_twice(color_b, depth_b, NULL, 0, &st, &m, NULL);
+        draw_twice(color_a, depth_a, vcache, sizeof vcache, NO_DRAW_CACHE, &st, &m, NULL);
+        draw_twice(color_b, depth_b, NULL, 0, NO_DRAW_CACHE, &st, &m, NULL);
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_b, depth_a, sizeof depth_a, "depth differs from the general path");
         TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_b, color_a, sizeof color_a, "colour differs from the general path");
+        draw_twice(color_a, depth_a, NULL, 0, WITH_DRAW_CACHE, &st, &m, NULL);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_b, depth_a, sizeof depth_a, "depth (draw cache) differs from the general path");
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_b, color_a, sizeof color_a, "colour (draw cache) differs from the general path");
         for (i = 0; i < W * H; i++)
             written += depth_a[i] != 65535;
     }
@@ -215,10 +229,13 @@ static void test_shared_vertices(void)
             gcol[t * 3 + 1] = (uint8_t)next_rand();
             gcol[t * 3 + 2] = (uint8_t)next_rand();
         }
-        draw_twice(color_a, depth_a, gcache, sizeof gcache, &st, &m, &mvp);
-        draw_twice(color_b, depth_b, NULL, 0, &st, &m, &mvp);
-        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_a, depth_b, sizeof depth_a, "depth differs without the caller cache");
-        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_a, color_b, sizeof color_a, "colour differs without the caller cache");
+        draw_twice(color_a, depth_a, gcache, sizeof gcache, NO_DRAW_CACHE, &st, &m, &mvp);
+        draw_twice(color_b, depth_b, NULL, 0, WITH_DRAW_CACHE, &st, &m, &mvp);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_a, depth_b, sizeof depth_a, "depth differs with the draw cache");
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_a, color_b, sizeof color_a, "colour differs with the draw cache");
+        draw_twice(color_b, depth_b, NULL, 0, NO_DRAW_CACHE, &st, &m, &mvp);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(depth_a, depth_b, sizeof depth_a, "depth differs without any cache");
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(color_a, color_b, sizeof color_a, "colour differs without any cache");
         for (i = 0; i < W * H; i++)
             written += depth_a[i] != 65535;
     }

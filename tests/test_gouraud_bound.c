@@ -43,6 +43,8 @@ static uint8_t vcol[9];
 static uint8_t color_buf[W * H * 3];
 static uint16_t depth_buf[W * H];
 static uint32_t vcache[3 * 2]; /* ZL_VERTEX_CACHE_BYTES(3) */
+/* PATH_DRAW's draw cache (zl_context.draw_cache): the small-cache path */
+static uint64_t draw_cache[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
 static uint64_t work[8192];
 static const zl_rgb black = {0, 0, 0};
 static char msg[300];
@@ -129,6 +131,9 @@ static void render(zl_format fmt, unsigned path, const zl_state *st)
         if (path == PATH_DRAW_CACHED) {
             ctx.vertex_cache = vcache;
             ctx.vertex_cache_bytes = sizeof vcache;
+        } else {
+            ctx.draw_cache = draw_cache;
+            ctx.draw_cache_bytes = sizeof draw_cache;
         }
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
     }

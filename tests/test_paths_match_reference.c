@@ -261,6 +261,9 @@ static void model_lines(const zl_state *st)
 static uint8_t color_buf[W * H * 3];
 static uint16_t depth_buf[W * H];
 static uint32_t vcache[NTRI * 3 * 2]; /* ZL_VERTEX_CACHE_BYTES(NTRI * 3) */
+/* PATH_DRAW's draw cache (zl_context.draw_cache): the draw without a vertex
+ * cache takes the small-cache path, as before issue 23 the default call did */
+static uint64_t draw_cache[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
 static uint64_t work[6000];
 static const zl_rgb clear_rgb = {0x5A, 0xA5, 0x3C};
 
@@ -301,6 +304,9 @@ static void render_direct(zl_format fmt, const zl_state *st, int lines, int cach
     if (cached) {
         ctx.vertex_cache = vcache;
         ctx.vertex_cache_bytes = sizeof vcache;
+    } else {
+        ctx.draw_cache = draw_cache;
+        ctx.draw_cache_bytes = sizeof draw_cache;
     }
     meshes(&m, &l, st->shading == ZL_SHADE_GOURAUD);
     if (lines)

@@ -27,6 +27,9 @@
 /* Returned by the band callback when writing a row failed. */
 #define BAND_WRITE_FAILED 100
 
+/* zl_draw_mesh's draw cache (zl_context.draw_cache) at the library's size. */
+static uint64_t draw_cache_buf[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
+
 /* Help of --visibility (issue #6), printed after usage_text (C99 caps a string at 4095). */
 static const char vis_usage_text[] =
     "\nVisibility (docs/VISIBILITY.md)\n"
@@ -255,6 +258,10 @@ static const char *status_name(zl_status s)
         return "ZL_ERR_CAPACITY (the scene needs more than the frame was sized for)";
     case ZL_ERR_IO:
         return "ZL_ERR_IO (a display bus transfer failed)";
+    case ZL_ERR_ABI:
+        return "ZL_ERR_ABI (the tool and the library were built with different configuration)";
+    case ZL_ERR_UNSUPPORTED:
+        return "ZL_ERR_UNSUPPORTED (a feature this library build leaves out)";
     }
     return "unknown status";
 }
@@ -1189,6 +1196,8 @@ static int render_frame(const options *o, const zl_mesh *mesh, const zl_mat4 *mv
     if (st == ZL_OK) {
         ctx.state = *state;
         style_of(o, &ctx.style);
+        ctx.draw_cache = draw_cache_buf;
+        ctx.draw_cache_bytes = sizeof draw_cache_buf;
         st = zl_draw_mesh(&ctx, mesh, mvp);
     }
     if (st == ZL_OK && o->outline) {

@@ -41,6 +41,12 @@
 #                    arm-none-eabi-gcc for a hard-float Cortex-M4F
 #   abi_mismatch     a soft-float core into a hard-float firmware must fail to
 #                    link (the per-ABI link tests can fail)
+#   abi_config_match, abi_config_mismatch  (issue 23) a consumer with the
+#                    installed package's flags passes zl_init's ABI check; with
+#                    -DZL_DRAW_CACHE_SLOTS=256 against the default library,
+#                    zl_init and zl_frame_begin return ZL_ERR_ABI
+#   abi_config_recorded  a library configured with ZLINE_CONFIG records it
+#                    (zl_build_config.h): a find_package consumer sees it
 #   presets          CMakePresets.json: every preset README names is a
 #                    configure, build and test preset; host and cortex-m4f
 #                    configure
@@ -225,6 +231,52 @@ pkg_config_panel() {
         >"$out/panel-pc.c"
     cc $strict_c $flags "$out/panel-pc.c" $libs -o "$out/panel-pc" || fail "compile"
     "$out/panel-pc" || fail "the panel driver's configuration or argument check"
+}
+
+# --- the ABI check (issue 23) --------------------------------------------------
+# abi_config_match: the installed package's flags (pkg-config) give the
+# library's configuration: zl_init passes the key check. abi_config_mismatch:
+# the same consumer with -DZL_DRAW_CACHE_SLOTS=256 against a 1024-slot
+# library: zl_init and zl_frame_begin return ZL_ERR_ABI.
+abi_probe_build() { # abi_probe_build OUT EXTRA-FLAGS...
+    need pkg-config
+    o=$1; shift
+    export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+    flags="$(pkg-config --cflags zline)" && libs="$(pkg-config --libs zline)" || fail "pkg-config zline"
+    echo "$flags" | grep -q -- -DZL_BUILD_CONFIG || fail "zline.pc's Cflags lack -DZL_BUILD_CONFIG"
+    [ -f "$prefix/include/zline/zl_build_config.h" ] || fail "zl_build_config.h not installed"
+    cc $strict_c $flags "$@" "$here/app/abi_probe.c" $libs -o "$o" || fail "compile"
+}
+abi_config_match() {
+    abi_probe_build "$out/abi-match" && "$out/abi-match" || fail "the key check refused the package's own flags"
+}
+abi_config_mismatch() {
+    abi_probe_build "$out/abi-mismatch" -DZL_DRAW_CACHE_SLOTS=256 -DEXPECT_ABI_ERROR=1 && "$out/abi-mismatch" ||
+        fail "a consumer built with another ZL_DRAW_CACHE_SLOTS was not refused with ZL_ERR_ABI"
+}
+# abi_config_recorded: a library configured with ZLINE_CONFIG=ZL_DRAW_CACHE_SLOTS=256,
+# installed: its CMake package gives a find_package consumer the same value
+# (zl_build_config.h), and zl_init passes.
+abi_config_recorded() {
+    b=$out/zline-lib-256
+    p=$out/prefix-256
+    cmake -S "$root" -B "$b" -DCMAKE_BUILD_TYPE=Release -DZLINE_BUILD_TESTS=OFF -DZLINE_BUILD_TOOLS=OFF \
+        -DZLINE_BUILD_BENCHMARKS=OFF -DZLINE_BUILD_PORTS=OFF -DZLINE_CONFIG=ZL_DRAW_CACHE_SLOTS=256 &&
+        cmake --build "$b" -j "$jobs" && cmake --install "$b" --prefix "$p" || fail "build and install"
+    grep -q 'define ZL_DRAW_CACHE_SLOTS 256' "$p/include/zline/zl_build_config.h" || fail "the value is not recorded"
+    mkdir -p "$out/abi-recorded-src"
+    cat >"$out/abi-recorded-src/CMakeLists.txt" <<EOF2
+# SPDX-License-Identifier: MIT
+cmake_minimum_required(VERSION 3.16)
+project(abi_recorded C)
+find_package(zline CONFIG REQUIRED)
+add_executable(abi_probe $here/app/abi_probe.c)
+target_compile_definitions(abi_probe PRIVATE EXPECT_SLOTS=256)
+target_link_libraries(abi_probe PRIVATE zline::zline)
+EOF2
+    cmake -S "$out/abi-recorded-src" -B "$out/abi-recorded" -DCMAKE_PREFIX_PATH="$p" &&
+        cmake --build "$out/abi-recorded" || fail "the find_package consumer"
+    "$out/abi-recorded/abi_probe" || fail "the consumer does not see the library's configuration"
 }
 
 # --- asset conversion and the panel component in firmware -------------------
@@ -424,6 +476,9 @@ check version version_case
 check fetchcontent fetchcontent
 check pkg_config pkg_config
 check pkg_config_panel pkg_config_panel
+check abi_config_match abi_config_match
+check abi_config_mismatch abi_config_mismatch
+check abi_config_recorded abi_config_recorded
 check assets_host assets_host
 check install_cortex-m4f install_m4f
 check assets_find_package_cortex-m4f assets_find_package_m4f

@@ -40,6 +40,10 @@ int bench_scene_load(const char *path, zl_obj *obj, zl_mesh *mesh, zl_mat4 *mvp,
     return 0;
 }
 
+/* zl_draw_mesh's draw cache (zl_context.draw_cache) at the library's size:
+ * the default call's cached path, as zl_context held it before issue 23. */
+static uint64_t draw_cache_buf[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
+
 void bench_scene_context(zl_context *ctx, uint16_t *color, uint16_t *depth, const zl_state *state)
 {
     zl_target t;
@@ -54,6 +58,8 @@ void bench_scene_context(zl_context *ctx, uint16_t *color, uint16_t *depth, cons
     t.format = ZL_FORMAT_RGB565;
     if (zl_init(ctx, &t) != ZL_OK)
         exit(2);
+    ctx->draw_cache = draw_cache_buf;
+    ctx->draw_cache_bytes = sizeof draw_cache_buf;
     zl_clear(ctx, background, 65535);
     ctx->state = *state;
 }

@@ -72,6 +72,10 @@ typedef struct {
     uint8_t *tree_fcol, *tree_idcol;
 } scene;
 
+/* zl_draw_mesh's draw cache (zl_context.draw_cache) at the library's size:
+ * the default call's cached path, as zl_context held it before issue 23. */
+static uint64_t draw_cache_buf[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
+
 static const char *methods[] = {"zbuffer", "scanline", "band16", "aet", "painter", "bsp-b2f", "bsp-f2b", "raycast"};
 #define NMETHODS 8
 
@@ -343,6 +347,8 @@ VB_NOINLINE void vb_measured(int m, const scene *s, const zl_mesh *mesh, const z
         if (zl_init(&ctx, &t) != ZL_OK || zl_clear(&ctx, bg, 65535) != ZL_OK)
             exit(3);
         ctx.state = *st;
+        ctx.draw_cache = draw_cache_buf;
+        ctx.draw_cache_bytes = sizeof draw_cache_buf;
         if (zl_draw_mesh(&ctx, mesh, &s->mvp) != ZL_OK)
             exit(3);
     } else if (m == 1 || m == 2) {

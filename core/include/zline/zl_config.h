@@ -11,6 +11,11 @@
 #ifdef ZL_CONFIG_HEADER
 #include ZL_CONFIG_HEADER
 #endif
+/* The configuration a CMake build of the library recorded (ZLINE_CONFIG):
+ * the CMake package and zline.pc define ZL_BUILD_CONFIG for every consumer. */
+#ifdef ZL_BUILD_CONFIG
+#include "zline/zl_build_config.h"
+#endif
 
 /*
  * ZL_SUBPIXEL_BITS: fractional bits of window x and y. Vertices snap to
@@ -47,17 +52,19 @@
 #endif
 
 /*
- * ZL_DRAW_CACHE_SLOTS: entries of zl_draw_mesh's own post-transform vertex
+ * ZL_DRAW_CACHE_SLOTS: entries of zl_draw_mesh's post-transform vertex
  * cache, used when the caller gives no vertex cache (zl_context.vertex_cache
- * NULL or too small). Direct-mapped by vertex index; each entry costs 10
- * bytes of zl_context (an 8-byte window vertex and a 2-byte tag), plus 144
- * bytes for the draw's transform set-up: the default 1024 is 10384 bytes
- * (zl_context is frame mode's, next to a full colour and depth target). A
- * power of two from 2 to 32768, or 0 for no cache (then each triangle
- * transforms and clips its own three vertices: slower, the same pixels). Measured on the bunny (docs/MEASUREMENTS.md, Cortex-M4):
- * smaller caches miss more often, each miss is one vertex transform.
- * zl_context's layout depends on it: the library and its callers must be
- * built with the same value.
+ * NULL or too small) but a draw cache (zl_context.draw_cache, caller memory
+ * of zl_draw_cache_bytes() bytes). Direct-mapped by vertex index; each entry
+ * costs 10 bytes (an 8-byte window vertex and a 2-byte tag), plus 144 bytes
+ * for the draw's transform set-up: the default 1024 is 10384 bytes. A power
+ * of two from 2 to 32768, or 0 for no cache (then each triangle transforms
+ * and clips its own three vertices: slower, the same pixels; so does a draw
+ * given no draw cache). Measured on the bunny (docs/MEASUREMENTS.md,
+ * Cortex-M4): smaller caches miss more often, each miss is one vertex
+ * transform. It does not change zl_context (issue 23): a caller compiled
+ * with another value gets zl_draw_cache_bytes() from the library, and a
+ * draw cache smaller than that is not used.
  */
 #ifndef ZL_DRAW_CACHE_SLOTS
 #define ZL_DRAW_CACHE_SLOTS 1024
@@ -66,6 +73,30 @@
     (ZL_DRAW_CACHE_SLOTS < 2 || ZL_DRAW_CACHE_SLOTS > 32768 || (ZL_DRAW_CACHE_SLOTS & (ZL_DRAW_CACHE_SLOTS - 1)) != 0)
 #error "ZL_DRAW_CACHE_SLOTS must be 0 or a power of two from 2 to 32768"
 #endif
+
+/*
+ * ZL_SMALL_TRIANGLE_SETUP: 1 lets small triangles take the compact 32-bit
+ * set-up of zl_setup_fast.c (zl_tiny_*), 0 sends them to the general one
+ * (the same pixels). Default 1 where int has 32 bits or more, 0 where it has
+ * 16 (AVR, MSP430): there the set-up's 32-bit products are library calls, it
+ * costs about 54 KB of ATmega2560 code at -Os, and before issue 23 a 16-bit
+ * shift in its range check (1u << 25) kept it unreachable there anyway.
+ */
+#ifndef ZL_SMALL_TRIANGLE_SETUP
+#include <limits.h>
+#if INT_MAX > 32767
+#define ZL_SMALL_TRIANGLE_SETUP 1
+#else
+#define ZL_SMALL_TRIANGLE_SETUP 0
+#endif
+#endif
+
+/*
+ * ZL_FEATURES: the optional features compiled in, one bit each (none can be
+ * left out yet: 0). Part of ZL_ABI_KEY (zline.h), so an application and a
+ * library built with different feature sets fail zl_init with ZL_ERR_ABI.
+ */
+#define ZL_FEATURES 0u
 
 /*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library

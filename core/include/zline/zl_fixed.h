@@ -48,7 +48,10 @@ typedef enum {
     ZL_ERR_RANGE = -2,      /* a number outside its documented range */
     ZL_ERR_SIZE = -3,       /* a buffer or dimension too small or too large */
     ZL_ERR_CAPACITY = -4,   /* the scene needs more than the frame was sized for */
-    ZL_ERR_IO = -5          /* a display bus reported a failed or timed-out transfer (port/display) */
+    ZL_ERR_IO = -5,         /* a display bus reported a failed or timed-out transfer (port/display) */
+    ZL_ERR_ABI = -6,        /* application and library built with different struct sizes or
+                               configuration (zl_init, zl_frame_begin: ZL_ABI_KEY) */
+    ZL_ERR_UNSUPPORTED = -7 /* a feature this build of the library leaves out */
 } zl_status;
 
 /*

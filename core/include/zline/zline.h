@@ -718,20 +718,31 @@ typedef struct {
      * it, never the target. */
     void *vertex_cache;
     size_t vertex_cache_bytes;
-#if ZL_DRAW_CACHE_SLOTS > 0
-    /* Without that cache, zl_draw_mesh keeps the window vertices of recent
-     * triangles here (ZL_DRAW_CACHE_SLOTS in zl_config.h: 10 bytes a slot,
-     * 10240 bytes by default, plus 144 for the transform set-up: 10384
-     * bytes; the same pixels either way). Library scratch,
-     * rewritten by every draw: do not touch. */
-    int64_t draw_setup[18]; /* the draw's transform set-up (off the stack) */
-    uint32_t draw_cache[2 * ZL_DRAW_CACHE_SLOTS];
-    uint16_t draw_cache_tag[ZL_DRAW_CACHE_SLOTS];
-#endif
+    /* Optional draw cache for zl_draw_mesh (NULL after zl_init): without
+     * the vertex cache above, a plain flat or Gouraud draw keeps the window
+     * vertices of recent triangles here, a direct-mapped cache of
+     * ZL_DRAW_CACHE_SLOTS entries (zl_config.h) after the draw's transform
+     * set-up. It needs zl_draw_cache_bytes() bytes (10,384 with the default
+     * 1024 slots), 8-byte aligned (declare it as uint64_t[]; where uint64_t
+     * is aligned to less, as on AVR, add __attribute__((aligned(8)))). NULL,
+     * a smaller or a misaligned cache is not used: each triangle then
+     * transforms and clips its own three vertices (the general path:
+     * slower, the same pixels). Library scratch, rewritten by every draw. */
+    void *draw_cache;
+    size_t draw_cache_bytes;
 } zl_context;
 
 /* Bytes of vertex cache for n vertices (scanline mode uses the same entries). */
 #define ZL_VERTEX_CACHE_BYTES(n) ((size_t)(n) * 8u)
+/* Bytes of draw cache for a library built with ZL_DRAW_CACHE_SLOTS = slots:
+ * the transform set-up (144 bytes), then 8 bytes of window vertex and a
+ * 2-byte tag a slot; 0 for 0 slots (no draw cache). */
+#define ZL_DRAW_CACHE_SETUP_BYTES 144u
+#define ZL_DRAW_CACHE_BYTES(slots) \
+    ((slots) > 0 ? ZL_DRAW_CACHE_SETUP_BYTES + (size_t)(slots) * 10u : (size_t)0)
+/* The draw cache this library uses: ZL_DRAW_CACHE_BYTES of the
+ * ZL_DRAW_CACHE_SLOTS it was built with (0: it has none). */
+size_t zl_draw_cache_bytes(void);
 
 /* Check the target and set the default state and style. */
 zl_status zl_init(zl_context *ctx, const zl_target *target);
@@ -891,6 +902,56 @@ typedef int (*zl_band_fn)(void *user, const zl_band *band);
 int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user);
 /* What the submitted scene needs; valid after the first zl_frame_next_band. */
 zl_frame_needs_t zl_frame_needs(const zl_frame *f);
+
+/* ------------------------------------------------------------- ABI check */
+
+/* A short English description of a status, for logs ("unknown status" for
+ * a value that is none). */
+const char *zl_status_string(zl_status s);
+
+/*
+ * ZL_ABI_KEY: a 32-bit fingerprint (FNV-1a) of the sizes of the public
+ * structs and of the zl_config.h values, as this compilation sees them.
+ * zl_init and zl_frame_begin are macros that pass the application's key to
+ * the library, which compares it with its own: ZL_ERR_ABI when they differ
+ * (the library built with other configuration macros, another compiler or
+ * other ABI flags than the application), before anything is written. The
+ * functions themselves stay callable, unchecked, as (zl_init)(ctx, target).
+ */
+#define ZL_ABI_MIX(h, v) ((uint32_t)((uint32_t)((uint32_t)(h) ^ (uint32_t)(v)) * UINT32_C(16777619)))
+/* one struct size or configuration value at a time */
+#define ZL_ABI_S1 ZL_ABI_MIX(UINT32_C(2166136261), sizeof(zl_context))
+#define ZL_ABI_S2 ZL_ABI_MIX(ZL_ABI_S1, sizeof(zl_target))
+#define ZL_ABI_S3 ZL_ABI_MIX(ZL_ABI_S2, sizeof(zl_state))
+#define ZL_ABI_S4 ZL_ABI_MIX(ZL_ABI_S3, sizeof(zl_style))
+#define ZL_ABI_S5 ZL_ABI_MIX(ZL_ABI_S4, sizeof(zl_mesh))
+#define ZL_ABI_S6 ZL_ABI_MIX(ZL_ABI_S5, sizeof(zl_texture))
+#define ZL_ABI_S7 ZL_ABI_MIX(ZL_ABI_S6, sizeof(zl_lines))
+#define ZL_ABI_S8 ZL_ABI_MIX(ZL_ABI_S7, sizeof(zl_outline))
+#define ZL_ABI_S9 ZL_ABI_MIX(ZL_ABI_S8, sizeof(zl_lighting))
+#define ZL_ABI_S10 ZL_ABI_MIX(ZL_ABI_S9, sizeof(zl_frame))
+#define ZL_ABI_S11 ZL_ABI_MIX(ZL_ABI_S10, sizeof(zl_frame_config))
+#define ZL_ABI_S12 ZL_ABI_MIX(ZL_ABI_S11, sizeof(zl_band))
+#define ZL_ABI_S13 ZL_ABI_MIX(ZL_ABI_S12, sizeof(zl_frame_needs_t))
+#define ZL_ABI_SIZES ZL_ABI_S13
+#define ZL_ABI_C1 ZL_ABI_MIX(ZL_ABI_SIZES, ZL_SUBPIXEL_BITS)
+#define ZL_ABI_C2 ZL_ABI_MIX(ZL_ABI_C1, ZL_GUARD_PX)
+#define ZL_ABI_C3 ZL_ABI_MIX(ZL_ABI_C2, ZL_MAX_DIM)
+#define ZL_ABI_C4 ZL_ABI_MIX(ZL_ABI_C3, ZL_DRAW_CACHE_SLOTS)
+#define ZL_ABI_C5 ZL_ABI_MIX(ZL_ABI_C4, ZL_SMALL_TRIANGLE_SETUP)
+#define ZL_ABI_C6 ZL_ABI_MIX(ZL_ABI_C5, ZL_FEATURES)
+#define ZL_ABI_KEY ZL_ABI_C6
+
+/* The library's own ZL_ABI_KEY. */
+uint32_t zl_abi_key(void);
+/* zl_init and zl_frame_begin after the key check (ZL_ERR_ABI on a mismatch).
+ * The macros are variadic so that an argument with commas of its own (a
+ * compound literal such as (zl_rgb){0, 0, 0}) passes through unchanged. */
+zl_status zl_init_abi(uint32_t abi_key, zl_context *ctx, const zl_target *target);
+zl_status zl_frame_begin_abi(uint32_t abi_key, zl_frame *f, const zl_frame_config *cfg, void *work,
+                             size_t work_bytes, zl_rgb clear_color, uint16_t clear_depth);
+#define zl_init(...) zl_init_abi(ZL_ABI_KEY, __VA_ARGS__)
+#define zl_frame_begin(...) zl_frame_begin_abi(ZL_ABI_KEY, __VA_ARGS__)
 
 #ifdef __cplusplus
 }

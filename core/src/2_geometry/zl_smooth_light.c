@@ -179,10 +179,10 @@ static uint32_t pow30(uint32_t x, unsigned e)
     uint32_t r = (uint32_t)Q30;
     while (e != 0) {
         if (e & 1u)
-            r = (uint32_t)(((uint64_t)r * x + (1u << 29)) >> 30);
+            r = (uint32_t)(((uint64_t)r * x + (UINT32_C(1) << 29)) >> 30);
         e >>= 1;
         if (e != 0)
-            x = (uint32_t)(((uint64_t)x * x + (1u << 29)) >> 30);
+            x = (uint32_t)(((uint64_t)x * x + (UINT32_C(1) << 29)) >> 30);
     }
     return r;
 }
@@ -313,11 +313,11 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
         int lit = normal30(&normals[v * 3u], u);
         for (i = 0; i < nl; i++) {
             uint32_t d = lit ? cos30(u, pl[i].l) : 0;
-            d12[i] = (d + (1u << 17)) >> 18;
+            d12[i] = (d + (UINT32_C(1) << 17)) >> 18;
             s12[i] = 0;
             if (d != 0 && pl[i].spec) {
                 uint32_t x = cos30(u, pl[i].h);
-                s12[i] = (pow30(x, shininess) + (1u << 17)) >> 18;
+                s12[i] = (pow30(x, shininess) + (UINT32_C(1) << 17)) >> 18;
             }
         }
         for (k = 0; k < 3; k++) {

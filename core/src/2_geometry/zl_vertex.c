@@ -129,7 +129,7 @@ static uint16_t color_out(int32_t c)
 {
     if (c < 0)
         return 0;
-    return (uint16_t)(c > 255 * 256 ? 255 * 256 : c);
+    return (uint16_t)(c > INT32_C(255) * 256 ? INT32_C(255) * 256 : c);
 }
 
 /* floor(n / d) for n >= 0 whose quotient fits 32 bits: one 32-bit division
@@ -167,7 +167,7 @@ static ZL_ALWAYS_INLINE uint32_t depth_q16(uint32_t z, uint32_t w)
 {
     uint64_t n = ((uint64_t)z << 32) - ((uint64_t)z << 16) + (w >> 1); /* shifts: no multiply */
 #if defined(__ARM_FEATURE_IDIV) || !defined(__arm__) || ZL_MUL32_ONLY
-    if (w < (1u << 20)) {
+    if (w < (UINT32_C(1) << 20)) {
         uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r, q2, q1, q0;
         r = (hi << 12) | (lo >> 20); /* hi < w */
         q2 = r / w;
@@ -275,8 +275,8 @@ static int vx_prepare(const zl_source *s, vx_setup *vs)
         vs->bias[k] = (int64_t)m[k * 4 + 3] * ZL_FX_ONE + 32768;
     vs->wd = s->width;
     vs->ht = s->height;
-    vs->gx = s->width + 2u * ZL_GUARD_PX;
-    vs->gy = s->height + 2u * ZL_GUARD_PX;
+    vs->gx = (uint32_t)s->width + 2u * ZL_GUARD_PX;
+    vs->gy = (uint32_t)s->height + 2u * ZL_GUARD_PX;
     vs->hx = s->width * (uint32_t)(ZL_SUB_ONE / 2);
     vs->hy = s->height * (uint32_t)(ZL_SUB_ONE / 2);
     vs->pfast = fast_bound(vs);

@@ -235,8 +235,8 @@ static ZL_NOINLINE void gouraud_long(const zl_span_state *ss, uint16_t *cp, uint
 static ZL_ALWAYS_INLINE uint32_t colour_start(uint32_t v)
 {
     int32_t cv = (int32_t)v;
-    if (v > (255u << ZL_ATTR_FRAC))
-        cv = cv < 0 ? 0 : (255 << ZL_ATTR_FRAC);
+    if (v > (UINT32_C(255) << ZL_ATTR_FRAC))
+        cv = cv < 0 ? 0 : (INT32_C(255) << ZL_ATTR_FRAC);
     return ((uint32_t)cv >> (ZL_ATTR_FRAC - 16)) + (1u << 15);
 }
 

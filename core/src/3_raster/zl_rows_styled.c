@@ -66,8 +66,8 @@ static void tex_sample(const zl_texture *tex, unsigned filter, int64_t u8, int64
         /* the fraction of a floor: conversion to unsigned is modulo 2^N, so
          * the low byte of a negative p is its floor's fraction too */
         const unsigned fx = (unsigned)(uint64_t)pu & 255u, fy = (unsigned)(uint64_t)pv & 255u;
-        const size_t x0 = texel_index_any(pu, tex->width, tex->wrap_s);
-        const size_t x1 = texel_index_any(pu + 256, tex->width, tex->wrap_s);
+        const size_t x0 = (size_t)texel_index_any(pu, tex->width, tex->wrap_s);
+        const size_t x1 = (size_t)texel_index_any(pu + 256, tex->width, tex->wrap_s);
         const uint16_t *r0 = tex->texels + (size_t)texel_index_any(pv, tex->height, tex->wrap_t) * tex->stride;
         const uint16_t *r1 = tex->texels + (size_t)texel_index_any(pv + 256, tex->height, tex->wrap_t) * tex->stride;
         unsigned c[4][4], k;
@@ -76,8 +76,8 @@ static void tex_sample(const zl_texture *tex, unsigned filter, int64_t u8, int64
         unpack_texel(r1[x0], tex->format, &c[2][0], &c[2][1], &c[2][2], &c[2][3]);
         unpack_texel(r1[x1], tex->format, &c[3][0], &c[3][1], &c[3][2], &c[3][3]);
         for (k = 0; k < 4; k++) {
-            unsigned top = c[0][k] * (256u - fx) + c[1][k] * fx, bottom = c[2][k] * (256u - fx) + c[3][k] * fx;
-            out[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+            uint32_t top = c[0][k] * (256u - fx) + c[1][k] * fx, bottom = c[2][k] * (256u - fx) + c[3][k] * fx;
+            out[k] = (unsigned)((top * (256u - fy) + bottom * fy + 32768u) >> 16);
         }
     }
 }

@@ -288,8 +288,8 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
         zl_div_inv_init(&inv, pf.c32);
         pf.inv = &inv;
     }
-    pf.small = pf.dx1 > -(1 << 17) && pf.dx1 < (1 << 17) && pf.dy1 < (1 << 17) && pf.dx2 > -(1 << 17) &&
-               pf.dx2 < (1 << 17) && pf.dy2 < (1 << 17); /* dy >= 0: the vertices are sorted by y */
+    pf.small = pf.dx1 > -(INT32_C(1) << 17) && pf.dx1 < (INT32_C(1) << 17) && pf.dy1 < (INT32_C(1) << 17) && pf.dx2 > -(INT32_C(1) << 17) &&
+               pf.dx2 < (INT32_C(1) << 17) && pf.dy2 < (INT32_C(1) << 17); /* dy >= 0: the vertices are sorted by y */
     pf.ax = (int32_t)zl_floor_shift64(v[0]->x, ZL_SUB_BITS);
     pf.ay = (int32_t)zl_floor_shift64(v[0]->y, ZL_SUB_BITS);
     pf.ox = (int64_t)pf.ax * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->x;

@@ -10,6 +10,13 @@
  */
 #include <string.h>
 
+/* GCC before 6 (Debian's avr-gcc 5.4) loses track of which fields a set-up
+ * wrote once it is inlined, and calls the ones read after a successful
+ * set-up (return 1, every field written) maybe uninitialized. */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 6
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 #include "zl_raster.h"
 
 /* Sort three cached vertices by y with sort3's comparisons (so the same
@@ -250,6 +257,8 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
     zl_attr z;
     if (!cached_rows(v, height, &first, &mid, &end))
         return 0;
+    if (!ZL_SMALL_TRIANGLE_SETUP) /* (zl_config.h) */
+        return -1;
     v0 = v[0];
     v1 = v[1];
     v2 = v[2];
@@ -264,7 +273,7 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
     zlo = v0->z < v1->z ? (v0->z < v2->z ? v0->z : v2->z) : (v1->z < v2->z ? v1->z : v2->z);
     zhi = v0->z > v1->z ? (v0->z > v2->z ? v0->z : v2->z) : (v1->z > v2->z ? v1->z : v2->z);
     if (v0->x <= -8192 || v0->x >= 8192 || v1->x <= -8192 || v1->x >= 8192 || v2->x <= -8192 || v2->x >= 8192 ||
-        f.dy2 >= 8192 || zhi - zlo >= (1u << 25)) /* (tiny_depth's bound) */
+        f.dy2 >= 8192 || zhi - zlo >= (UINT32_C(1) << 25)) /* (tiny_depth's bound) */
         return -1;
     d1 = (int32_t)(v1->z - v0->z); /* below 2^25 in magnitude */
     d2 = (int32_t)(v2->z - v0->z);

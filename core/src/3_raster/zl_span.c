@@ -10,7 +10,7 @@ void zl_span_state_init(zl_span_state *ss, const zl_state *st, int has_depth, in
     int test = st->depth_test && has_depth;
     ss->func = test ? st->depth_func : (uint8_t)ZL_ALWAYS;
     ss->zwrite = (uint8_t)(test && st->depth_write);
-    ss->bpp = has_color ? (uint8_t)zl_format_bytes(format) : 0;
+    ss->bpp = (uint8_t)(has_color ? zl_format_bytes(format) : 0);
     ss->format = (uint8_t)format;
     ss->gouraud = st->shading == ZL_SHADE_GOURAUD;
     ss->width = width;
@@ -585,8 +585,8 @@ void zl_span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int
                          uint32_t dz, const uint32_t *c, const uint32_t *dc)
 {
     int32_t k;
-    if (ss->bpp != 2 || !stays_below(c[0], dc[0], n, 256u << 16) || !stays_below(c[1], dc[1], n, 256u << 16) ||
-        !stays_below(c[2], dc[2], n, 256u << 16)) {
+    if (ss->bpp != 2 || !stays_below(c[0], dc[0], n, UINT32_C(256) << 16) || !stays_below(c[1], dc[1], n, UINT32_C(256) << 16) ||
+        !stays_below(c[2], dc[2], n, UINT32_C(256) << 16)) {
         span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
         return;
     }

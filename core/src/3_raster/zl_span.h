@@ -250,7 +250,7 @@ static inline unsigned channel_of(uint32_t c)
     uint32_t v = c >> 16;
     if (v > 255u)
         v = c >= 0x80000000u ? 0u : 255u;
-    return v;
+    return (unsigned)v;
 }
 
 /*

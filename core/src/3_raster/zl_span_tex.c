@@ -131,7 +131,7 @@ static ZL_ALWAYS_INLINE void span_blend565(uint32_t leq, unsigned mode, int zwri
                 if (mode == ZL_BLEND_ADD) {
                     /* div255 of c a in each lane: at most 65025 + 128 */
                     arb = (div255_lanes_hi(crb * a + UINT32_C(0x00800080)) >> 8) & ZL_LANES_LO;
-                    ag = div255(cg * a);
+                    ag = div255((unsigned)(cg * a)); /* cg < 256 */
                 } else {
                     arb = crb * a + UINT32_C(0x00800080);
                     ag = cg * a + 128u;
@@ -194,9 +194,9 @@ static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *t
             const uint16_t *r1 = tex->texels + (size_t)tap_pow2(iv + 1, tex->height, tex->wrap_t) * tex->stride;
             unsigned t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
             for (k = 0; k < 3; k++) {
-                unsigned top = ch565(t00, k) * (256u - fx) + ch565(t10, k) * fx;
-                unsigned bottom = ch565(t01, k) * (256u - fx) + ch565(t11, k) * fx;
-                o[k] = (top * (256u - fy) + bottom * fy + 32768u) >> 16;
+                uint32_t top = ch565(t00, k) * (256u - fx) + ch565(t10, k) * fx;
+                uint32_t bottom = ch565(t01, k) * (256u - fx) + ch565(t11, k) * fx;
+                o[k] = (unsigned)((top * (256u - fy) + bottom * fy + 32768u) >> 16);
             }
             zrow[i] = (uint16_t)d;
             crow[i] = (uint16_t)(((o[0] >> 3) << 11) | ((o[1] >> 2) << 5) | (o[2] >> 3));

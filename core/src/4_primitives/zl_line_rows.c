@@ -92,7 +92,7 @@ static void blend(const zl_span_state *ss, const zl_active *t, uint8_t *crow, ui
         old[2] = (b5 << 3) | (b5 >> 2);
     }
     for (k = 0; k < 3; k++)
-        old[k] = div255_floor(old[k] * (255u - w) + t->rgb[k] * w + 127u);
+        old[k] = (unsigned)div255_floor(old[k] * (255u - w) + t->rgb[k] * w + 127u);
     pack_color((zl_format)ss->format, old[0], old[1], old[2], pix);
     put_pixel(p, ss->bpp, pix, ss->keep);
 }

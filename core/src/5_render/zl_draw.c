@@ -8,10 +8,10 @@
 
 /* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
 typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
-#if ZL_DRAW_CACHE_SLOTS > 0
-/* zl_context.draw_setup holds a zl_vx (8-byte aligned: int64_t). */
-typedef char zl_draw_setup_fits[(sizeof(zl_vx) <= sizeof(((zl_context *)0)->draw_setup)) ? 1 : -1];
-#endif
+/* The draw cache starts with a zl_vx (8-byte aligned: int64_t), the slots
+ * after it stay 8-byte aligned. */
+typedef char zl_draw_setup_fits[(sizeof(zl_vx) <= ZL_DRAW_CACHE_SETUP_BYTES) ? 1 : -1];
+typedef char zl_draw_setup_keeps_alignment[(ZL_DRAW_CACHE_SETUP_BYTES % 8u == 0) ? 1 : -1];
 
 static int aligned2(const void *p)
 {
@@ -42,7 +42,7 @@ static zl_status check_target(const zl_target *t)
     return ZL_OK;
 }
 
-zl_status zl_init(zl_context *ctx, const zl_target *target)
+zl_status(zl_init)(zl_context *ctx, const zl_target *target)
 {
     zl_status st;
     if (ctx == NULL || target == NULL)
@@ -55,7 +55,14 @@ zl_status zl_init(zl_context *ctx, const zl_target *target)
     zl_style_default(&ctx->style);
     ctx->vertex_cache = NULL;
     ctx->vertex_cache_bytes = 0;
+    ctx->draw_cache = NULL;
+    ctx->draw_cache_bytes = 0;
     return ZL_OK;
+}
+
+size_t zl_draw_cache_bytes(void)
+{
+    return ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS);
 }
 
 static uint8_t *color_row(const zl_target *t, int32_t y)
@@ -268,8 +275,8 @@ static ZL_ALWAYS_INLINE void draw_visible(const zl_context *ctx, const zl_source
 static int culled_area_sign(const zl_state *st);
 
 /*
- * zl_draw_mesh's own post-transform cache (ctx->draw_cache, no caller
- * cache): slot i & (ZL_DRAW_CACHE_SLOTS - 1) holds the window vertex of
+ * zl_draw_mesh's post-transform cache in the caller's ctx->draw_cache
+ * (no vertex cache): slot i & (ZL_DRAW_CACHE_SLOTS - 1) holds the window vertex of
  * vertex i when its tag is i. The bunny's triangles reuse a vertex far
  * apart (median index spread in a triangle: 333), so a direct-mapped cache
  * of 1024 slots misses 24 % of its 11022 lookups (256 slots: 45 %); each
@@ -398,7 +405,8 @@ static uint32_t draw_plain_small_gouraud(const zl_context *ctx, const zl_source 
 }
 
 /* A plain flat draw (or, with `gouraud`, a plain Gouraud draw) without the
- * caller's cache, through ctx->draw_cache. */
+ * vertex cache, through ctx->draw_cache: the set-up vx, the slots' vertices,
+ * their tags. */
 static void draw_small(zl_context *ctx, const zl_source *src, const zl_span_state *ss, const zl_vx *vx, int gouraud)
 {
     small_cache sc;
@@ -406,8 +414,9 @@ static void draw_small(zl_context *ctx, const zl_source *src, const zl_span_stat
     int cull_sign = culled_area_sign(&ctx->state);
     int tiny = zl_tiny_span_state(ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
     unsigned k;
-    sc.v = (zl_cached_vertex *)(void *)ctx->draw_cache;
-    sc.tag = ctx->draw_cache_tag;
+    sc.v = (zl_cached_vertex *)(void *)((uint8_t *)ctx->draw_cache + ZL_DRAW_CACHE_SETUP_BYTES);
+    sc.tag = (uint16_t *)(void *)((uint8_t *)ctx->draw_cache + ZL_DRAW_CACHE_SETUP_BYTES +
+                                  (size_t)ZL_DRAW_CACHE_SLOTS * sizeof(zl_cached_vertex));
     sc.vx = vx;
     for (k = 0; k < ZL_DRAW_CACHE_SLOTS; k++)
         sc.tag[k] = (uint16_t)(k ^ 1u); /* never k's own index: every slot empty */
@@ -420,6 +429,13 @@ static void draw_small(zl_context *ctx, const zl_source *src, const zl_span_stat
     for (t = draw_plain_small(ctx, src, ss, 0, cull_sign, tiny, &sc); t < n;
          t = draw_plain_small(ctx, src, ss, t + 1, cull_sign, tiny, &sc))
         draw_general(ctx, src, t, ss, 0);
+}
+
+/* Whether the caller gave a draw cache this library can use. */
+static int draw_cache_usable(const zl_context *ctx)
+{
+    return ctx->draw_cache != NULL && ((uintptr_t)ctx->draw_cache & 7u) == 0 &&
+           ctx->draw_cache_bytes >= ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS);
 }
 #endif
 
@@ -491,10 +507,10 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
                        (zl_format)ctx->target.format, ctx->target.width);
     planes = zl_style_needs_planes(&ctx->style);
 #if ZL_DRAW_CACHE_SLOTS > 0
-    if (src.cache == NULL) {
+    if (src.cache == NULL && draw_cache_usable(ctx)) {
         int flat = plain_flat(ctx);
-        /* the set-up in the context, not on the stack of the general path */
-        zl_vx *vx = (zl_vx *)(void *)ctx->draw_setup;
+        /* the set-up in the draw cache, not on the stack of the general path */
+        zl_vx *vx = (zl_vx *)ctx->draw_cache;
         if ((flat || plain_gouraud(ctx, mesh)) && zl_vx_prepare(&src, vx)) {
             draw_small(ctx, &src, &ss, vx, !flat);
             return ZL_OK;

@@ -71,7 +71,7 @@ size_t zl_frame_bytes(const zl_frame_config *cfg)
     return l.total;
 }
 
-zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
+zl_status(zl_frame_begin)(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
                          zl_rgb clear_color, uint16_t clear_depth)
 {
     layout l;

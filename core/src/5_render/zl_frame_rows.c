@@ -12,7 +12,7 @@
 static uint8_t mesh_of_id(const zl_frame *f, uint16_t id)
 {
     uint8_t mi = 0;
-    while (mi + 1 < f->mesh_count && id >= f->meshes[mi + 1].tri_base)
+    while ((int32_t)mi + 1 < (int32_t)f->mesh_count && id >= f->meshes[mi + 1].tri_base)
         mi++;
     return mi;
 }
@@ -242,7 +242,7 @@ static ZL_NOINLINE void render_row_styled(zl_frame *f, uint16_t y, uint16_t i, u
         if (slot == ZL_LIST_END)
             break;
         a = &f->pool[slot];
-        if (a->row != y) { /* a later piece of a clipped triangle: not started */
+        if ((int32_t)a->row != (int32_t)y) { /* a later piece of a clipped triangle: not started */
             link = &a->next;
             continue;
         }
@@ -448,7 +448,7 @@ static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint
         if (slot == ZL_LIST_END)
             break;
         a = &pool[slot];
-        if (a->row != y) { /* a later piece of a clipped triangle, not started */
+        if ((int32_t)a->row != (int32_t)y) { /* a later piece of a clipped triangle, not started */
             link = &a->next;
             continue;
         }

@@ -181,7 +181,7 @@ int zl_aet_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user)
         /* Pieces whose first row this is put their two edges in the list. */
         for (i = 0; i < n_act; i++) {
             uint16_t slot = v->act[i];
-            if (s.pool[slot].row == y && !(v->flags[slot] & LIVE)) {
+            if ((int32_t)s.pool[slot].row == (int32_t)y && !(v->flags[slot] & LIVE)) {
                 v->flags[slot] |= LIVE;
                 edges[n_edges].slot = slot;
                 edges[n_edges].leave = 0;

@@ -108,7 +108,7 @@ static void draw_masked(cover *c, zl_active *t, const uint8_t *pix, uint16_t id)
         crow = tg->color ? (uint8_t *)tg->color + (size_t)t->row * (size_t)tg->color_stride : NULL;
         irow = tg->ids ? (uint16_t *)(void *)((uint8_t *)tg->ids + (size_t)t->row * (size_t)tg->ids_stride) : NULL;
         for (i = x0; i < x1; i++) {
-            uint32_t bit = 1u << ((unsigned)i & 31u);
+            uint32_t bit = UINT32_C(1) << ((unsigned)i & 31u);
             if (bits[i >> 5] & bit)
                 continue;
             bits[i >> 5] |= bit;

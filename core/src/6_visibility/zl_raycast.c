@@ -146,7 +146,7 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
         /* Retire finished pieces first, so the pool never holds more than
          * planning counted (order does not matter: ties go by id). */
         for (b = 0; b < count;) {
-            if (pool[b].end <= y)
+            if ((int32_t)pool[b].end <= (int32_t)y)
                 pool[b] = pool[--count];
             else
                 b++;
@@ -182,7 +182,7 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
             for (b = 0; b < count; b++) {
                 const zl_vis_rtri *r = &pool[b];
                 uint64_t z;
-                if (r->first > y || i < r->px0 || i >= r->px1 || !cast(r, px, py, &z))
+                if ((int32_t)r->first > (int32_t)y || i < r->px0 || i >= r->px1 || !cast(r, px, py, &z))
                     continue;
                 if (best == NULL || z < z1 || (z == z1 && r->id < best->id)) {
                     z2 = z1;

@@ -121,6 +121,10 @@ static int check_target(const char *scene_name, uint32_t total)
 
 /* Vertex cache for the cached frame-mode variant: up to 8192 vertices. */
 static uint32_t vcache_buf[2 * 8192];
+/* The default call's draw cache (zl_context.draw_cache, issue 23): the size
+ * zl_context held before it moved to caller memory, so the default rows
+ * measure the same cached path (10,384 bytes at the default 1024 slots). */
+static uint64_t draw_cache_buf[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 1];
 
 /* ------------------------------------------------------------ frame mode */
 
@@ -222,6 +226,33 @@ static void stage_rows(const scene *s, const zl_context *ctx, uint32_t *counts)
     }
 }
 
+/* The frame without any cache (no draw cache, no vertex cache: the
+ * general path, zl_context alone): its own line, total_nocache, no budget;
+ * it must give the default call's image (hash h_draw). */
+static int nocache_frame(const scene *s, zl_context *ctx, zl_rgb bg, uint32_t h_draw)
+{
+    void *dc = ctx->draw_cache;
+    unsigned m;
+    ctx->draw_cache = NULL;
+    m = bench_stamp_count();
+    if (s->normals != NULL) {
+        mark();
+        light_scene(s);
+    } else {
+        mark();
+    }
+    zl_clear(ctx, bg, 65535);
+    zl_draw_mesh(ctx, &s->mesh, &s->mvp);
+    mark();
+    interval(s->name, "total_nocache", m, m + 1);
+    ctx->draw_cache = dc;
+    if (fnv1a(depth_buf, sizeof depth_buf, fnv1a(color_buf, sizeof color_buf, 2166136261u)) != h_draw) {
+        printf("bench: %s: the frame without a cache differs from the default one\n", s->name);
+        return 1;
+    }
+    return 0;
+}
+
 static int run_scene(const scene *s)
 {
     zl_context ctx;
@@ -242,6 +273,8 @@ static int run_scene(const scene *s)
     if (zl_init(&ctx, &tg) != ZL_OK)
         return 1;
     ctx.state = s->state;
+    ctx.draw_cache = draw_cache_buf;
+    ctx.draw_cache_bytes = sizeof draw_cache_buf;
 
     /* one frame: clear + draw, with its stack high-water mark */
     base = zl_port_stack_paint();
@@ -294,6 +327,8 @@ static int run_scene(const scene *s)
         printf("bench: %s: the vertex-cached frame differs from the plain one\n", s->name);
         return 1;
     }
+    if (nocache_frame(s, &ctx, bg, h_draw) != 0)
+        return 1;
 
     /* the staged variants, each after a clear */
     zl_clear(&ctx, bg, 65535);
@@ -315,6 +350,7 @@ static int run_scene(const scene *s)
     stage_rows(s, &ctx, counts);
     printf("RESULT %s %s triangles %u\n", BENCH_TAG, s->name, (unsigned)s->mesh.triangle_count);
     printf("RESULT %s %s vertices_x8 %u\n", BENCH_TAG, s->name, (unsigned)ZL_VERTEX_CACHE_BYTES(s->mesh.vertex_count));
+    printf("RESULT %s %s draw_cache_bytes %u\n", BENCH_TAG, s->name, (unsigned)zl_draw_cache_bytes());
     printf("RESULT %s %s drawn %lu\n", BENCH_TAG, s->name, (unsigned long)counts[0]);
     printf("RESULT %s %s pixels %lu\n", BENCH_TAG, s->name, (unsigned long)counts[1]);
     printf("RESULT %s %s stack %lu\n", BENCH_TAG, s->name, (unsigned long)stack);

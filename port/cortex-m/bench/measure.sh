@@ -162,6 +162,14 @@ for s in $scenes; do
     done
 done
 echo
+echo "### zl_draw_mesh's caches, Cortex-M4 -O2 (issue 23)"
+echo
+echo "| scene | no cache (zl_init's default: the general path) | draw cache (ctx.draw_cache) | vertex cache (ctx.vertex_cache) | draw cache RAM (bytes) | vertex cache RAM (bytes) |"
+echo "|---|---:|---:|---:|---:|---:|"
+for s in bunny bunny_gouraud bunny_clip; do
+    echo "| $s | $(num "$(get frame-O2 $s total_nocache)") | $(num "$(get frame-O2 $s total)") | $(num "$(get frame-O2 $s total_vcache)") | $(num "$(get frame-O2 $s draw_cache_bytes)") | $(num "$(get frame-O2 $s vertices_x8)") |"
+done
+echo
 echo "### Frame mode by phase (instructions; the stages run separately, see bench.c)"
 echo
 echo "| scene | opt | triangles | drawn | pixels written | clear | transform/clip | setup | rasterisation | general path, whole | transform/clip per triangle | setup per drawn triangle | rasterisation per pixel |"
