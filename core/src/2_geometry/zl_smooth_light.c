@@ -266,7 +266,7 @@ static void light_one_diffuse(const sl_light *l, const uint32_t amb[3], const ui
     uint32_t v;
     for (v = 0; v < count; v++) {
         int32_t u[3];
-        uint32_t d = normal30(&normals[v * 3u], u) ? cos30(u, l->l) : 0, d12 = (d + (1u << 17)) >> 18;
+        uint32_t d = normal30(&normals[v * 3u], u) ? cos30(u, l->l) : 0, d12 = (d + (UINT32_C(1) << 17)) >> 18;
         uint8_t *out = &colors[v * 3u];
         const uint8_t *mat = vc != NULL ? &vc[v * 3u] : NULL;
         out[0] = light_channel(mat != NULL ? mat[0] : mtl[0], a0 + d0 * d12, 0);
