@@ -804,7 +804,8 @@ typedef struct {
 typedef struct {
     uint16_t first_row, rows, width;
     uint8_t format;
-    const void *color;      /* rows x width pixels */
+    void *color;            /* rows x width pixels: the caller's to draw on
+                               (zl_overlay.h) until the next band */
     int32_t color_stride;   /* bytes */
     const uint16_t *depth;  /* rows x width depth values */
     int32_t depth_stride;   /* bytes */
@@ -895,5 +896,8 @@ zl_frame_needs_t zl_frame_needs(const zl_frame *f);
 #ifdef __cplusplus
 }
 #endif
+
+/* 2D overlays over the 3D, in every mode: rectangles, lines, text, images. */
+#include "zl_overlay.h"
 
 #endif /* ZLINE_H */
