@@ -899,5 +899,7 @@ zl_frame_needs_t zl_frame_needs(const zl_frame *f);
 
 /* 2D overlays over the 3D, in every mode: rectangles, lines, text, images. */
 #include "zl_overlay.h"
+/* Work-buffer capacities for a mesh in every pose, without a dry run. */
+#include "zl_sizing.h"
 
 #endif /* ZLINE_H */
