@@ -137,7 +137,7 @@ static void test_bound_holds_for_random_meshes_and_poses(void)
         cfg.band_rows = (uint16_t)zt_rand_range(&rng, 1, cfg.height);
         cfg.format = ZL_FORMAT_RGB565;
         cfg.color_buffers = 1;
-        bytes = zl_frame_bound(&cfg, &mesh, &cam, (unsigned)zt_rand_range(&rng, 1, 24));
+        bytes = zl_frame_bound(&cfg, &mesh, &cam, (unsigned)zt_rand_range(&rng, 1, 12));
         TEST_ASSERT_TRUE(bytes > 0);
         TEST_ASSERT_EQUAL_UINT32(bytes, zl_frame_bytes(&cfg));
         if (bytes > sizeof work)
@@ -187,7 +187,7 @@ static void test_bound_is_useful_for_a_fine_mesh(void)
     cam.near_z = ZL_FX_ONE / 10;
     cam.far_z = ZL_FX_INT(100);
     cam.distance = ZL_FX_INT(3);
-    TEST_ASSERT_TRUE(zl_frame_bound(&cfg, &mesh, &cam, ZL_SIZING_PRECISION_MAX) > 0);
+    TEST_ASSERT_TRUE(zl_frame_bound(&cfg, &mesh, &cam, 24) > 0);
     TEST_ASSERT_TRUE(cfg.max_active * 2u < t);
     for (pose = 0; pose < 200; pose++)
         plan_pose(&cfg, &cam, (zl_angle)zt_rand_range(&rng, 0, ZL_ANGLE_TURN - 1),
