@@ -901,5 +901,7 @@ zl_frame_needs_t zl_frame_needs(const zl_frame *f);
 #include "zl_overlay.h"
 /* Work-buffer capacities for a mesh in every pose, without a dry run. */
 #include "zl_sizing.h"
+/* Flat shading from the zl_lighting of smooth shading (lights in world space). */
+#include "zl_face_light.h"
 
 #endif /* ZLINE_H */
