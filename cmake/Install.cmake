@@ -6,12 +6,12 @@
 #   find_package(zline 0.1 CONFIG REQUIRED)            -> zline::zline
 #   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS host)  -> zline::host too
 #   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS panel) -> zline::panel (SPI panel drivers)
-#   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS tools) -> zline::obj2c, zline::img2c
+#   find_package(zline 0.1 CONFIG REQUIRED COMPONENTS tools) -> zline::obj2c, zline::img2c, zline::size
 #   pkg-config --cflags --libs zline   (and zline-host, zline-panel)
 #
 # The panel drivers (port/display) are the `panel` component, installed by
 # every build, cross ones included. The converters are the `tools`
-# component, host builds only (bin/zline-obj2c, bin/zline-img2c, exported
+# component, host builds only (bin/zline-obj2c, bin/zline-img2c, bin/zline-size, exported
 # as zlineToolsTargets); zlineAssets.cmake, installed beside the package,
 # gives every find_package user zline_add_mesh() and zline_add_texture().
 #
@@ -55,8 +55,8 @@ if(TARGET zline_panel)
           COMPONENT panel)
 endif()
 
-if(TARGET zline-obj2c AND TARGET zline-img2c)
-  install(TARGETS zline-obj2c zline-img2c EXPORT zlineToolsTargets
+if(TARGET zline-obj2c AND TARGET zline-img2c AND TARGET zline-size)
+  install(TARGETS zline-obj2c zline-img2c zline-size EXPORT zlineToolsTargets
           RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
   install(EXPORT zlineToolsTargets NAMESPACE zline:: DESTINATION ${ZLINE_INSTALL_CMAKEDIR}
           COMPONENT tools)

@@ -512,7 +512,7 @@ static void test_padded_rows_are_sent_row_by_row(void)
 {
     /* A band whose rows have padding between them (stride > width * 2):
      * the padding must not reach the panel. 3 rows of 4 pixels, stride 12. */
-    static const uint8_t rows[3 * 12] = {
+    static uint8_t rows[3 * 12] = {
         0x10, 0x01, 0x10, 0x02, 0x10, 0x03, 0x10, 0x04, 0xEE, 0xEE, 0xEE, 0xEE,
         0x20, 0x01, 0x20, 0x02, 0x20, 0x03, 0x20, 0x04, 0xEE, 0xEE, 0xEE, 0xEE,
         0x30, 0x01, 0x30, 0x02, 0x30, 0x03, 0x30, 0x04, 0xEE, 0xEE, 0xEE, 0xEE,
@@ -546,7 +546,7 @@ static void test_bad_input_sends_nothing(void)
     zl_panel p;
     zl_band band;
     uint32_t sent;
-    static const uint16_t row[240];
+    static uint16_t row[240]; /* a band's pixels are writable (zl_overlay.h) */
     panel_start(&p, &c, &bus, 0);
     sent = model.bytes;
     TEST_ASSERT_EQUAL_INT(ZL_ERR_RANGE, zl_panel_window(&p, 200, 0, 41, 10));

@@ -68,9 +68,46 @@ static int scene_state(zl_state *st, int index)
     return 0;
 }
 
+/* The overlay drawn into every row before it goes to the panel: the frame
+ * number top left and a gauge of the turn along the bottom. */
+typedef struct {
+    zl_band_fn row_fn;
+    void *user;
+    int index;
+} overlay_pass;
+
+/* "frame NN" without stdio: index is 0 .. 99. */
+static void frame_label(char out[9], int index)
+{
+    static const char prefix[] = "frame ";
+    int i;
+    for (i = 0; i < 6; i++)
+        out[i] = prefix[i];
+    out[6] = (char)('0' + index / 10 % 10);
+    out[7] = (char)('0' + index % 10);
+    out[8] = '\0';
+}
+
+static int draw_overlay(void *user, const zl_band *band)
+{
+    static const zl_rgb text = {255, 255, 255}, gauge = {255, 220, 120}, frame = {160, 160, 160};
+    const overlay_pass *o = (const overlay_pass *)user;
+    int degrees = (o->index % OLED_SCENE_FRAMES) * OLED_SCENE_DEGREES_PER_FRAME;
+    char label[9];
+    zl_canvas c;
+    if (zl_canvas_of_band(&c, band) != ZL_OK)
+        return ZL_ERR_ARG;
+    frame_label(label, o->index % 100);
+    (void)zl_canvas_text(&c, 2, 2, label, 1, text);
+    (void)zl_canvas_rect(&c, 2, OLED_SCENE_H - 6, 62, 4, frame);
+    (void)zl_canvas_fill_rect(&c, 3, OLED_SCENE_H - 5, (uint16_t)(60 * degrees / 360), 2, gauge);
+    return o->row_fn(o->user, band);
+}
+
 int oled_scene_render(int index, void *work, size_t work_bytes, zl_band_fn row_fn, void *user,
                       zl_frame_needs_t *needs)
 {
+    overlay_pass pass;
     /* A dark blue-grey background (grey level 2, not 0): a row or window
      * written in the wrong place shows against it. */
     static const zl_rgb background = {30, 40, 60};
@@ -88,7 +125,10 @@ int oled_scene_render(int index, void *work, size_t work_bytes, zl_band_fn row_f
         s = zl_frame_add_mesh(&frame, &bunny_mesh, &mvp, &st);
     if (s != ZL_OK)
         return s;
-    r = zl_frame_render(&frame, row_fn, user);
+    pass.row_fn = row_fn;
+    pass.user = user;
+    pass.index = index;
+    r = zl_frame_render(&frame, draw_overlay, &pass);
     if (needs != NULL)
         *needs = zl_frame_needs(&frame);
     return r;

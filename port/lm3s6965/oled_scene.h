@@ -3,7 +3,9 @@
  * The OLED demo's animation: the benchmark bunny (bunny.obj, normalised to a
  * largest extent of 2) turning about its vertical axis, OLED_SCENE_FRAMES
  * frames of OLED_SCENE_DEGREES_PER_FRAME degrees each, at the panel's
- * 128x64, rendered in zline's scanline mode (one row of depth).
+ * 128x64, rendered in zline's scanline mode (one row of depth), with a 2D
+ * overlay drawn into each row (zl_overlay.h): the frame number and a gauge
+ * of the turn.
  *
  * Portable: the firmware (oled_demo.c) renders it into the SSD0323 and the
  * host reference (host/oled_reference.c) renders the same frames into files;

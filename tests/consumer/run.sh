@@ -176,7 +176,7 @@ install_tree() {
         [ -f "$prefix/$f" ] || fail "not installed: $f"
     done
     # The programs: the two converters, nothing else (no test, no benchmark).
-    [ "$(ls "$prefix/bin" | tr '\n' ' ')" = "zline-img2c zline-obj2c " ] || fail "programs installed: $(ls "$prefix/bin")"
+    [ "$(ls "$prefix/bin" | tr '\n' ' ')" = "zline-img2c zline-obj2c zline-size " ] || fail "programs installed: $(ls "$prefix/bin")"
     "$prefix/bin/zline-obj2c" --bogus 2>&1 | grep -q usage || fail "the installed zline-obj2c does not run"
 }
 

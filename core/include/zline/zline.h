@@ -815,7 +815,8 @@ typedef struct {
 typedef struct {
     uint16_t first_row, rows, width;
     uint8_t format;
-    const void *color;      /* rows x width pixels */
+    void *color;            /* rows x width pixels: the caller's to draw on
+                               (zl_overlay.h) until the next band */
     int32_t color_stride;   /* bytes */
     const uint16_t *depth;  /* rows x width depth values */
     int32_t depth_stride;   /* bytes */
@@ -956,5 +957,12 @@ zl_status zl_frame_begin_abi(uint32_t abi_key, zl_frame *f, const zl_frame_confi
 #ifdef __cplusplus
 }
 #endif
+
+/* 2D overlays over the 3D, in every mode: rectangles, lines, text, images. */
+#include "zl_overlay.h"
+/* Work-buffer capacities for a mesh in every pose, without a dry run. */
+#include "zl_sizing.h"
+/* Flat shading from the zl_lighting of smooth shading (lights in world space). */
+#include "zl_face_light.h"
 
 #endif /* ZLINE_H */

@@ -92,9 +92,49 @@ static void scene_state(zl_state *st, const zl_mat4 *model)
     st->light_dir.z = model_light[2];
 }
 
+/* The 2D overlay drawn into every row before it goes to the panel
+ * (zl_overlay.h): the frame number top left, a gauge of the turn along the
+ * bottom. The same calls on every row give the image they give on a whole
+ * frame. */
+typedef struct {
+    zl_band_fn row_fn;
+    void *user;
+    uint16_t step;
+} overlay_pass;
+
+/* "frame NNN" without stdio: step is 0 .. 999. */
+static void frame_label(char out[10], uint16_t step)
+{
+    static const char prefix[] = "frame ";
+    uint8_t i;
+    for (i = 0; i < 6; i++)
+        out[i] = prefix[i];
+    out[6] = (char)('0' + step / 100u % 10u);
+    out[7] = (char)('0' + step / 10u % 10u);
+    out[8] = (char)('0' + step % 10u);
+    out[9] = '\0';
+}
+
+static int draw_overlay(void *user, const zl_band *band)
+{
+    static const zl_rgb text = {255, 255, 255}, gauge = {255, 200, 40}, border = {200, 200, 200};
+    const overlay_pass *o = (const overlay_pass *)user;
+    uint16_t filled = (uint16_t)((uint32_t)(ROTATING_SCENE_W - 12u) * o->step / ROTATING_SCENE_FRAMES);
+    char label[10];
+    zl_canvas c;
+    if (zl_canvas_of_band(&c, band) != ZL_OK)
+        return ZL_ERR_ARG;
+    frame_label(label, o->step);
+    (void)zl_canvas_text(&c, 6, 6, label, 2, text);
+    (void)zl_canvas_rect(&c, 4, (int16_t)(ROTATING_SCENE_H - 14u), (uint16_t)(ROTATING_SCENE_W - 8u), 10, border);
+    (void)zl_canvas_fill_rect(&c, 6, (int16_t)(ROTATING_SCENE_H - 12u), filled, 6, gauge);
+    return o->row_fn(o->user, band);
+}
+
 int rotating_scene_render(uint16_t index, uint64_t *work, size_t work_bytes, zl_band_fn row_fn,
                           void *user)
 {
+    overlay_pass pass;
     static const zl_rgb background = {16, 24, 40};
     static const zl_mesh cube = {cube_positions, cube_indices, NULL, cube_face_colors, 8, 12};
     zl_frame_config cfg;
@@ -105,7 +145,10 @@ int rotating_scene_render(uint16_t index, uint64_t *work, size_t work_bytes, zl_
     rotating_scene_config(&cfg);
     if (zl_frame_bytes(&cfg) > work_bytes)
         return ZL_ERR_ARG;
-    s = scene_mvp(&mvp, &model, (uint16_t)(index % ROTATING_SCENE_FRAMES));
+    pass.row_fn = row_fn;
+    pass.user = user;
+    pass.step = (uint16_t)(index % ROTATING_SCENE_FRAMES);
+    s = scene_mvp(&mvp, &model, pass.step);
     if (s != ZL_OK)
         return s;
     scene_state(&st, &model);
@@ -114,5 +157,5 @@ int rotating_scene_render(uint16_t index, uint64_t *work, size_t work_bytes, zl_
         s = zl_frame_add_mesh(&frame, &cube, &mvp, &st);
     if (s != ZL_OK)
         return s;
-    return zl_frame_render(&frame, row_fn, user);
+    return zl_frame_render(&frame, draw_overlay, &pass);
 }

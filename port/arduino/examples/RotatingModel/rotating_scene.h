@@ -3,7 +3,8 @@
  * The RotatingModel example's scene, in portable C99 (no Arduino calls): a
  * lit cube with one colour per face, turning about two axes, rendered one
  * row at a time (scanline mode) as big-endian RGB565, the bytes an ST7789
- * or ILI9341 takes. The sketch sends the rows to the panel; the host
+ * or ILI9341 takes, with a 2D overlay (frame number, gauge) drawn into each
+ * row. The sketch sends the rows to the panel; the host
  * reference (port/arduino/test) renders the same frames to check them.
  */
 #ifndef ROTATING_SCENE_INCLUDED
