@@ -825,6 +825,7 @@ typedef struct {
     zl_rgb clear_color;
     uint16_t clear_depth;
     uint16_t next_row;       /* first row of the next band */
+    uint16_t end_row;        /* rows end here: height, or the split row (zl_frame_split) */
     uint8_t planned;
     uint8_t band_index;
     uint16_t mesh_count;
@@ -891,6 +892,66 @@ typedef int (*zl_band_fn)(void *user, const zl_band *band);
 int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user);
 /* What the submitted scene needs; valid after the first zl_frame_next_band. */
 zl_frame_needs_t zl_frame_needs(const zl_frame *f);
+
+/* ------------------------------------------------- two cores, one frame */
+
+/*
+ * A frame split across two cores (or threads) by halves: the first core
+ * renders rows 0 .. split - 1 through the zl_frame it submitted to, the
+ * second rows split .. height - 1 through a second zl_frame that
+ * zl_frame_split makes from it. Halves rather than interleaved bands: a
+ * core planning only its rows rejects the other half's triangles before any
+ * setup, and only triangles crossing the split row are set up on both cores
+ * (interleaved bands would set up every triangle that crosses a band edge
+ * twice: every triangle taller than one row in scanline mode).
+ *
+ * Done once, on the first core, before the second starts: zl_frame_begin,
+ * the submission (zl_frame_add_*: the vertex transform into the shared
+ * vertex cache) and zl_frame_split. Then each core, on its own zl_frame:
+ * zl_frame_next_band or zl_frame_render as usual. Its first call classifies
+ * the triangles of its rows into its own edge table (the second core also
+ * walks, into a scratch row it does not hand out, the rows above the split
+ * of the triangles crossing it, so that its records reach the split row
+ * exactly as one core's would); the bands it returns are its own rows, in
+ * order, each with its first_row (zl_band): a display with a row window
+ * takes them as they come; one that takes rows only in order must keep the
+ * second core's bands (or let it wait) until the first core is done.
+ * Pixels are byte-identical to one core's (tests/test_frame_dual.c).
+ *
+ * Memory. The first core's work buffer (zl_frame_bytes) holds the shared,
+ * read-only part: the mesh records, the vertex cache and the style records,
+ * written by the submission and never after zl_frame_split. The second
+ * core's work buffer (zl_frame_part_bytes) holds what each core has its own
+ * of: edge table (height + 1 row starts, max_triangles ids), active records
+ * (and their Gouraud and texture records), depth band and colour band(s).
+ * Each core writes only its own zl_frame and its own work buffer's part;
+ * the meshes, matrices, states, textures and colour arrays are read by both
+ * and must not change until both cores are done.
+ *
+ * Synchronisation (no locks and no OS calls in the library): the caller
+ *   1. on the first core, after zl_frame_split returned ZL_OK: a memory
+ *      barrier (DMB on Cortex-M, `fence rw,w` on RISC-V, a release store or
+ *      pthread_create on a host), then starts or signals the second core
+ *      (e.g. a flag it polls);
+ *   2. on the second core, after seeing that signal and before touching the
+ *      frame: a barrier (DMB; `fence r,rw`; an acquire load);
+ *   3. on the second core, when its last band is out: a barrier, then its
+ *      "done" flag; the first core waits for that flag (and a barrier)
+ *      before zl_frame_begin reuses either work buffer.
+ * Uncached or write-through shared RAM is assumed (as on RP2040, RP2350 and
+ * the SSE-200); a part with data caches also needs its cache maintenance.
+ */
+/* Bytes of the second core's work buffer: zl_frame_bytes minus the mesh
+ * records and the vertex cache (with cfg.styled the style records' room is
+ * kept, unused); 0 if cfg is invalid. */
+size_t zl_frame_part_bytes(const zl_frame_config *cfg);
+/* Split f (begun, submitted, not yet planned) at row `split_row` (0: chosen
+ * by zl_frame_split to balance the cached vertices between the halves;
+ * rounded down to a multiple of band_rows, at most height) and make
+ * `second`, in `work` (8-byte aligned, >= zl_frame_part_bytes), the frame of
+ * the rows below it. ZL_ERR_ARG if f is not in that state or an argument is
+ * NULL or misaligned, ZL_ERR_SIZE if work_bytes is short. */
+zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_bytes, uint16_t split_row);
 
 #ifdef __cplusplus
 }

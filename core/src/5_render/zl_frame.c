@@ -88,6 +88,7 @@ zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, si
     f->cfg = *cfg;
     f->clear_color = clear_color;
     f->clear_depth = clear_depth;
+    f->end_row = cfg->height;
     f->meshes = (zl_frame_mesh *)(void *)(w + l.meshes);
     f->vcache = w + l.vcache;
     f->row_start = (uint16_t *)(void *)(w + l.row_start);

@@ -35,6 +35,7 @@ typedef struct {
     uint32_t n;              /* visible primitives so far */
     uint8_t *seen;           /* NULL, or a bit per filled triangle id: visible (count pass) */
     int marking;             /* the keys ran out: the count pass marks seen instead */
+    int32_t lo, hi;          /* the rows planned: a primitive outside [lo, hi) is dropped */
 } plan_pass;
 
 static ZL_ALWAYS_INLINE void mark_seen(const plan_pass *p, uint32_t id)
@@ -50,6 +51,8 @@ static uint16_t *key_at(const plan_pass *p, uint32_t k)
 /* Record visible primitive id with row range [first, end) and its pieces. */
 static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
 {
+    if (first >= p->hi || end <= p->lo) /* the other part of a split frame's */
+        return;
     if (p->diff == NULL) {
         f->visible[f->row_start[first]++] = (uint16_t)id;
     } else {
@@ -343,6 +346,84 @@ static ZL_NOINLINE void place_fill_seen(zl_frame *f, plan_pass *p, const zl_fram
     }
 }
 
+/* classify_cached for one part of a split frame (zl_frame_split): the row
+ * range first, so a triangle outside rows [lo, hi) is dropped before its
+ * area is computed; then the same tests. */
+static ZL_ALWAYS_INLINE int classify_cached_window(const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                                   const zl_cached_vertex *c, int cull_sign, uint16_t width,
+                                                   uint16_t height, int32_t lo, int32_t hi, int32_t *first,
+                                                   int32_t *end)
+{
+    *first = first_centre_at_or_after(min3(a->y, b->y, c->y));
+    *end = first_centre_at_or_after(max3(a->y, b->y, c->y));
+    if (*first >= hi || *end <= lo)
+        return 0;
+    return classify_cached(a, b, c, cull_sign, width, height, first, end);
+}
+
+/* classify_fill for one part of a split frame: without the bit array (the
+ * keys' second pass places by classifying again), triangles outside the
+ * part's rows dropped first. */
+static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                             const zl_style *sty)
+{
+    uint16_t w = f->cfg.width, h = f->cfg.height;
+    uint32_t t, count = m->mesh.triangle_count, n = p->n, id = m->tri_base;
+    uint32_t max_visible = f->cfg.max_triangles, na = p->na, nkeys = p->na + p->nb;
+    const uint16_t *idx = m->mesh.indices;
+    const zl_cached_vertex *cache = s->cache;
+    uint16_t *row_start = f->row_start, *visible = f->visible;
+    int32_t *diff = p->diff;
+    int cull_sign = (int)m->cull_code - 1;
+    for (t = 0; t < count; t++, id++, idx += 3) {
+        int32_t first, end;
+        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
+            p->n = n;
+            classify_polygon(f, p, m, s, sty, t); /* note() applies the rows */
+            n = p->n;
+            continue;
+        }
+        if (!classify_cached_window(c0, c1, c2, cull_sign, w, h, p->lo, p->hi, &first, &end))
+            continue;
+        if (diff == NULL) {
+            visible[row_start[first]++] = (uint16_t)id;
+        } else {
+            row_start[first]++;
+            diff[first] += 1;
+            diff[end] -= 1;
+            if (n < max_visible)
+                visible[n] = (uint16_t)id;
+            if (n < na)
+                p->key_a[n] = (uint16_t)first;
+            else if (n < nkeys)
+                p->key_b[n - na] = (uint16_t)first;
+        }
+        n++;
+    }
+    p->n = n;
+}
+
+/* classify_pass for one part of a split frame. */
+static ZL_NOINLINE uint32_t classify_pass_window(zl_frame *f, plan_pass *p)
+{
+    uint16_t mi;
+    p->n = 0;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        const zl_style *sty = style_of(f, mi);
+        zl_source s;
+        source_of(f, m, &s);
+        if (sty != NULL && ext_of(f, mi)->is_lines)
+            classify_lines(f, p, mi, &s);
+        else if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
+            classify_pieces(f, p, m, &s, sty);
+        else
+            classify_fill_window(f, p, m, &s, sty);
+    }
+    return p->n;
+}
+
 /* One pass over every primitive of every mesh; returns the visible ones. */
 static uint32_t classify_pass(zl_frame *f, plan_pass *p)
 {
@@ -436,27 +517,38 @@ static void reserve_seen(const zl_frame *f, plan_pass *p)
 zl_status zl_frame_plan(zl_frame *f)
 {
     layout l;
-    uint8_t *base = (uint8_t *)(void *)f->meshes;
+    uint8_t *pool;
+    int window = f->next_row != 0 || f->end_row != f->cfg.height; /* a part of a split frame */
     uint32_t running = 0, start = 0, peak = 0, slot, visible;
     uint16_t h = f->cfg.height, j;
     size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));
     plan_pass p;
     if (!zl_frame_layout(&f->cfg, &l)) /* cannot fail: zl_frame_begin checked the configuration */
         return ZL_ERR_ARG;
+    /* regions by their offsets from the pool (the second part of a split
+     * frame has the same offsets from there on: zl_frame_split) */
+    pool = (uint8_t *)(void *)f->pool;
+    p.lo = f->next_row;
+    p.hi = f->end_row;
     /* Until the first row the pool (after the difference array), the
      * Gouraud records and everything from the texture planes to the colour
      * bands are free: room for the first rows of the visible primitives,
      * which then need no second classification. */
     p.diff = (int32_t *)(void *)f->pool;
-    p.key_a = (uint16_t *)(void *)(base + l.pool + diff_bytes);
+    p.key_a = (uint16_t *)(void *)(pool + diff_bytes);
     p.na = l.ext - l.pool > diff_bytes ? (uint32_t)((l.ext - l.pool - diff_bytes) / sizeof(uint16_t)) : 0;
-    p.key_b = (uint16_t *)(void *)(base + l.tex);
+    p.key_b = (uint16_t *)(void *)(pool + (l.tex - l.pool));
     p.nb = (uint32_t)((l.total - l.tex) / sizeof(uint16_t));
-    reserve_seen(f, &p);
+    if (window) { /* no bit array: a part's keys rarely run out */
+        p.seen = NULL;
+        p.marking = 0;
+    } else {
+        reserve_seen(f, &p);
+    }
     fill_cache(f);
     memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
     memset(p.diff, 0, ((size_t)h + 1) * sizeof(int32_t));
-    visible = classify_pass(f, &p);
+    visible = window ? classify_pass_window(f, &p) : classify_pass(f, &p);
     f->needs.triangles = visible;
     for (j = 0; j < h; j++) {
         running += (uint32_t)p.diff[j];
@@ -476,7 +568,7 @@ zl_status zl_frame_plan(zl_frame *f)
         place_by_keys(f, &p, visible);
     } else { /* the keys did not fit: classify again */
         p.diff = NULL;
-        classify_pass(f, &p);
+        (void)(window ? classify_pass_window(f, &p) : classify_pass(f, &p));
     }
     /* The pool's free list: every record, in order. */
     for (slot = 0; slot < f->cfg.max_active; slot++)
