@@ -346,19 +346,15 @@ static ZL_NOINLINE void place_fill_seen(zl_frame *f, plan_pass *p, const zl_fram
     }
 }
 
-/* classify_cached for one part of a split frame (zl_frame_split): the row
- * range first, so a triangle outside rows [lo, hi) is dropped before its
- * area is computed; then the same tests. */
-static ZL_ALWAYS_INLINE int classify_cached_window(const zl_cached_vertex *a, const zl_cached_vertex *b,
-                                                   const zl_cached_vertex *c, int cull_sign, uint16_t width,
-                                                   uint16_t height, int32_t lo, int32_t hi, int32_t *first,
-                                                   int32_t *end)
+/* Whether a triangle with these window y (subpixels) crosses a row in
+ * [lo, hi): its first row first_centre_at_or_after(ymin) is below hi, that
+ * is ymin <= y_hi = (hi - 1) * ONE + HALF, and its end row
+ * first_centre_at_or_after(ymax) is above lo, that is ymax > y_lo = lo * ONE
+ * + HALF. A vertex at a time, so the other part's triangles cost a few
+ * compares (classify_cached then tests as for one core). */
+static ZL_ALWAYS_INLINE int in_rows(int32_t a, int32_t b, int32_t c, int32_t y_lo, int32_t y_hi)
 {
-    *first = first_centre_at_or_after(min3(a->y, b->y, c->y));
-    *end = first_centre_at_or_after(max3(a->y, b->y, c->y));
-    if (*first >= hi || *end <= lo)
-        return 0;
-    return classify_cached(a, b, c, cull_sign, width, height, first, end);
+    return (a <= y_hi || b <= y_hi || c <= y_hi) && (a > y_lo || b > y_lo || c > y_lo);
 }
 
 /* classify_fill for one part of a split frame: without the bit array (the
@@ -374,6 +370,7 @@ static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl
     const zl_cached_vertex *cache = s->cache;
     uint16_t *row_start = f->row_start, *visible = f->visible;
     int32_t *diff = p->diff;
+    int32_t y_lo = p->lo * ZL_SUB_ONE + ZL_SUB_HALF, y_hi = (p->hi - 1) * ZL_SUB_ONE + ZL_SUB_HALF;
     int cull_sign = (int)m->cull_code - 1;
     for (t = 0; t < count; t++, id++, idx += 3) {
         int32_t first, end;
@@ -384,7 +381,8 @@ static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl
             n = p->n;
             continue;
         }
-        if (!classify_cached_window(c0, c1, c2, cull_sign, w, h, p->lo, p->hi, &first, &end))
+        if (!in_rows(c0->y, c1->y, c2->y, y_lo, y_hi) ||
+            !classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
             continue;
         if (diff == NULL) {
             visible[row_start[first]++] = (uint16_t)id;
