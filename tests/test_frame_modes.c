@@ -221,6 +221,9 @@ static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
     c->textured = (uint8_t)styled;
     if (styled) /* outlines: a primitive per edge */
         c->max_triangles = NT * NMESH * 3;
+#ifdef ZT_FRAME_DUAL
+    c->parts = (uint8_t)((next_rand() & 1u) ? 2 : 0); /* the vertex transform in the parts or not */
+#endif
 }
 
 typedef struct {

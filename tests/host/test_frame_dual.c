@@ -10,6 +10,7 @@
  * threads share the mesh records and the vertex cache read-only and nothing
  * else.
  */
+#define _POSIX_C_SOURCE 200112L /* pthread_barrier_t */
 #define ZT_FRAME_DUAL 1
 #include "../test_frame_modes.c"
 
@@ -25,13 +26,22 @@ typedef struct {
     zl_frame frame;
     zl_band_fn fn;
     void *user;
+    pthread_barrier_t *prepared;
     int result;
 } part_job;
+
+/* zline.h's protocol: prepare, the barrier, the bands. */
+static int prepare_and_render(zl_frame *f, pthread_barrier_t *prepared, zl_band_fn fn, void *user)
+{
+    zl_status st = zl_frame_prepare(f);
+    pthread_barrier_wait(prepared);
+    return st != ZL_OK ? st : zl_frame_render(f, fn, user);
+}
 
 static void *render_part(void *arg)
 {
     part_job *job = arg;
-    job->result = zl_frame_render(&job->frame, job->fn, job->user);
+    job->result = prepare_and_render(&job->frame, job->prepared, job->fn, job->user);
     return NULL;
 }
 
@@ -41,6 +51,7 @@ static int render_split(zl_frame *f, uint16_t row, zl_band_fn fn, void *user_fir
 {
     part_job job;
     pthread_t t;
+    pthread_barrier_t prepared;
     int first;
     size_t bytes = zl_frame_part_bytes(&f->cfg);
     TEST_ASSERT_TRUE(bytes > 0 && bytes <= sizeof second_work);
@@ -48,12 +59,16 @@ static int render_split(zl_frame *f, uint16_t row, zl_band_fn fn, void *user_fir
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_split(f, &job.frame, second_work, bytes, row));
     if (f->end_row < f->cfg.height) /* split: refused a second time */
         TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_split(f, &job.frame, second_work, bytes, row));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_next_band(&job.frame, &(zl_band){0})); /* not prepared */
+    TEST_ASSERT_EQUAL_INT(0, pthread_barrier_init(&prepared, NULL, 2));
     job.fn = fn;
     job.user = user_second;
+    job.prepared = &prepared;
     job.result = -1;
     TEST_ASSERT_EQUAL_INT(0, pthread_create(&t, NULL, render_part, &job)); /* a full barrier */
-    first = zl_frame_render(f, fn, user_first);
+    first = prepare_and_render(f, &prepared, fn, user_first);
     TEST_ASSERT_EQUAL_INT(0, pthread_join(t, NULL));
+    pthread_barrier_destroy(&prepared);
     return first | job.result;
 }
 
@@ -111,9 +126,11 @@ static void test_bunny_two_threads_equal_one(void)
     for (b = 0; b < sizeof bands / sizeof bands[0]; b++) {
         zl_frame_config cfg;
         zl_frame f, second;
+        zl_band band;
         zt_frame_copy one;
         size_t bytes;
         zt_frame_config_of(&cfg, BENCH_W, BENCH_H, bands[b], ZL_FORMAT_RGB565);
+        cfg.parts = (uint8_t)(b != 1 ? 2 : 0);
         zt_frame_capacity(&cfg, 1, mesh.vertex_count, mesh.triangle_count, 512);
         bytes = zl_frame_bytes(&cfg);
         TEST_ASSERT_TRUE(bytes > 0 && bytes <= sizeof bunny_work);
@@ -126,8 +143,12 @@ static void test_bunny_two_threads_equal_one(void)
         /* the balanced row lies well inside the bunny's rows */
         bunny_frame(&f, &cfg, &mesh, &mvp, &st, bunny_work, bytes);
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_split(&f, &second, bunny_second, sizeof bunny_second, 0));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_prepare(&f));
+        TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_prepare(&f)); /* once */
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_prepare(&second));
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&second, &band)); /* resolves the row */
         if (bands[b] < BENCH_H / 4) /* else the row rounds down to a band's edge */
-            TEST_ASSERT_TRUE(second.next_row > BENCH_H / 4 && second.next_row < BENCH_H * 3 / 4);
+            TEST_ASSERT_TRUE(band.first_row > BENCH_H / 4 && band.first_row < BENCH_H * 3 / 4);
         for (r = 0; r < sizeof rows / sizeof rows[0]; r++) {
             int seen_first = 0, seen_second = 0;
             memset(two_color, 0, sizeof two_color);

@@ -49,9 +49,10 @@ static uint16_t *key_at(const plan_pass *p, uint32_t k)
 }
 
 /* Record visible primitive id with row range [first, end) and its pieces. */
-static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+static ZL_ALWAYS_INLINE void note_rows(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end,
+                                       unsigned pieces, int window)
 {
-    if (first >= p->hi || end <= p->lo) /* the other part of a split frame's */
+    if (window && (first >= p->hi || end <= p->lo)) /* the other part of a split frame's */
         return;
     if (p->diff == NULL) {
         f->visible[f->row_start[first]++] = (uint16_t)id;
@@ -65,6 +66,12 @@ static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_
             *key_at(p, p->n) = (uint16_t)first;
     }
     p->n++;
+}
+
+/* note_rows for a part of a split frame (p's rows only) or a whole one. */
+static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+{
+    note_rows(f, p, id, first, end, pieces, f->part != 0);
 }
 
 /* Lines and outline records: one record per primitive. Out of line, like the
@@ -165,8 +172,8 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
 /* Filled triangle t that needs clipping (or is dropped): the row range of
  * every fan triangle of its polygon. Out of line, so the polygon is not on
  * the stack (nor in the registers) of the loop below. */
-static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
-                                         const zl_style *sty, uint32_t t)
+static ZL_ALWAYS_INLINE void polygon_rows(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                          const zl_style *sty, uint32_t t, int window)
 {
     zl_poly poly;
     unsigned k, pieces = 0;
@@ -184,7 +191,20 @@ static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_fra
             end = b;
     }
     if (pieces != 0)
-        note(f, p, m->tri_base + t, first, end, pieces);
+        note_rows(f, p, m->tri_base + t, first, end, pieces, window);
+}
+
+static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                         const zl_style *sty, uint32_t t)
+{
+    polygon_rows(f, p, m, s, sty, t, 0);
+}
+
+/* classify_polygon for a part of a split frame: its rows only. */
+static ZL_NOINLINE void classify_polygon_window(zl_frame *f, plan_pass *p, const zl_frame_mesh *m,
+                                                const zl_source *s, const zl_style *sty, uint32_t t)
+{
+    polygon_rows(f, p, m, s, sty, t, 1);
 }
 
 /* classify_fill's count pass when a bit array follows the keys (p->seen):
@@ -377,7 +397,7 @@ static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl
         const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
         if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
             p->n = n;
-            classify_polygon(f, p, m, s, sty, t); /* note() applies the rows */
+            classify_polygon_window(f, p, m, s, sty, t);
             n = p->n;
             continue;
         }
@@ -516,13 +536,19 @@ zl_status zl_frame_plan(zl_frame *f)
 {
     layout l;
     uint8_t *pool;
-    int window = f->next_row != 0 || f->end_row != f->cfg.height; /* a part of a split frame */
+    int window = f->part != 0; /* a part of a split frame: its rows only */
     uint32_t running = 0, start = 0, peak = 0, slot, visible;
     uint16_t h = f->cfg.height, j;
     size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));
     plan_pass p;
     if (!zl_frame_layout(&f->cfg, &l)) /* cannot fail: zl_frame_begin checked the configuration */
         return ZL_ERR_ARG;
+    if (window) {
+        if (!f->prepared) /* its share of the vertex cache (zl_frame_prepare) */
+            return ZL_ERR_ARG;
+        if (f->split_row == 0)
+            zl_frame_split_resolve(f);
+    }
     /* regions by their offsets from the pool (the second part of a split
      * frame has the same offsets from there on: zl_frame_split) */
     pool = (uint8_t *)(void *)f->pool;
@@ -543,7 +569,8 @@ zl_status zl_frame_plan(zl_frame *f)
     } else {
         reserve_seen(f, &p);
     }
-    fill_cache(f);
+    if (!window) /* the parts cached theirs (zl_frame_prepare) */
+        fill_cache(f);
     memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
     memset(p.diff, 0, ((size_t)h + 1) * sizeof(int32_t));
     visible = window ? classify_pass_window(f, &p) : classify_pass(f, &p);

@@ -520,7 +520,7 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
     rows_walk(f, y, i, end, crow, zrow, 0, 0);
 }
 
-static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
 {
     uint16_t i = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y];
     unsigned mi, flags = 0, func = 0;

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Stage 5, render: a frame split across two cores (zline.h, "two cores, one
- * frame"). zl_frame_split finishes the shared part (the vertex cache) on the
- * first core and makes the second part's zl_frame: the same mesh records,
- * vertex cache and style records, its own edge table, active records and
- * bands in the second work buffer. Planning (zl_frame_plan.c) keeps only the
+ * frame"). zl_frame_split makes the second part's zl_frame: the same mesh
+ * records, vertex cache and style records, its own edge table, active
+ * records and bands in the second work buffer. zl_frame_prepare transforms
+ * a part's half of the vertices; planning (zl_frame_plan.c) keeps only the
  * triangles of a part's rows; zl_frame_rows.c's catch_up brings the second
  * part's records to its first row.
  */
@@ -29,32 +29,27 @@ size_t zl_frame_part_bytes(const zl_frame_config *cfg)
     return part_bytes(&l);
 }
 
-/* Vertices of the meshes add_record did not cache (pixel space, or too many
- * at that point), which planning would otherwise cache on both cores. */
-static void cache_remaining(zl_frame *f)
+/* Rows [0, row) to the first part, [row, height) to the second. */
+static void set_rows(zl_frame *f, uint16_t row)
 {
-    uint16_t mi;
-    for (mi = 0; mi < f->mesh_count; mi++) {
-        zl_frame_mesh *m = &f->meshes[mi];
-        zl_source s;
-        if ((m->flags & MESH_CACHED) || m->mesh.vertex_count == 0)
-            continue;
-        source_of(f, m, &s);
-        (void)zl_cache_vertices(&s, cache_of(f) + m->vert_base, 0, m->mesh.vertex_count);
-        m->flags = (uint8_t)(m->flags | MESH_CACHED);
-    }
+    if (f->part == 1)
+        f->end_row = row;
+    else
+        f->next_row = row;
 }
 
-/* The row that splits the cached vertices in two halves, counted per row in
- * `count` (height + 1 counters of the second work buffer, free until the
- * second core starts): the first row with at least half of them above. */
-static uint16_t balanced_row(const zl_frame *f, uint16_t *count)
+/* Every 4th cached vertex counted on its row (in the part's own row
+ * starts, which planning clears next): the first row with half of them
+ * above it. */
+#define SPLIT_SAMPLE 4u
+
+void zl_frame_split_resolve(zl_frame *f)
 {
     const zl_cached_vertex *c = cache_of(f);
-    uint16_t h = f->cfg.height, y;
+    uint16_t h = f->cfg.height, y, *count = f->row_start;
     uint32_t v, total = 0, seen = 0;
     memset(count, 0, ((size_t)h + 1) * sizeof(uint16_t));
-    for (v = 0; v < f->vertex_count; v++) {
+    for (v = 0; v < f->vertex_count; v += SPLIT_SAMPLE) {
         int32_t row;
         if (c[v].x <= ZL_CACHE_INVALID)
             continue;
@@ -64,34 +59,27 @@ static uint16_t balanced_row(const zl_frame *f, uint16_t *count)
         count[row]++;
         total++;
     }
-    for (y = 0; y < h; y++) {
-        seen += count[y];
-        if (2u * seen >= total)
-            return (uint16_t)(y + 1u);
-    }
-    return (uint16_t)(h / 2u);
+    y = (uint16_t)(h / 2u);
+    if (total != 0)
+        for (y = 0; y < h && 2u * (seen + count[y]) < total; y++)
+            seen += count[y];
+    y = (uint16_t)(y + 1u > h ? h : y + 1u);
+    set_rows(f, (uint16_t)(y - y % f->cfg.band_rows));
 }
 
 zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_bytes, uint16_t split_row)
 {
     layout l;
     uint8_t *w = work;
-    uint16_t h, band;
     if (f == NULL || second == NULL || work == NULL || second == f || ((uintptr_t)work & 7u) != 0)
         return ZL_ERR_ARG;
-    if (f->depth_band == NULL || f->planned || f->next_row != 0 || f->end_row != f->cfg.height ||
-        !zl_frame_layout(&f->cfg, &l)) /* never begun, already planned or split */
-        return ZL_ERR_ARG;
+    if (f->depth_band == NULL || f->planned || f->part != 0 || !zl_frame_layout(&f->cfg, &l))
+        return ZL_ERR_ARG; /* never begun, planned or split already */
     if (work_bytes < part_bytes(&l))
         return ZL_ERR_SIZE;
-    h = f->cfg.height;
-    band = f->cfg.band_rows;
-    cache_remaining(f);
-    if (split_row == 0)
-        split_row = balanced_row(f, (uint16_t *)(void *)w);
-    if (split_row > h)
-        split_row = h;
-    split_row = (uint16_t)(split_row - split_row % band);
+    if (split_row > f->cfg.height)
+        split_row = f->cfg.height;
+    split_row = (uint16_t)(split_row - split_row % f->cfg.band_rows);
     *second = *f;
     second->row_start = (uint16_t *)(void *)w;
     second->visible = (uint16_t *)(void *)(w + (l.visible - l.row_start));
@@ -101,8 +89,43 @@ zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_
     second->depth_band = (uint16_t *)(void *)(w + (l.depth - l.row_start));
     second->color_band[0] = w + (l.color0 - l.row_start);
     second->color_band[1] = f->cfg.color_buffers == 2 ? w + (l.color1 - l.row_start) : second->color_band[0];
-    second->next_row = split_row;
-    second->end_row = h;
-    f->end_row = split_row;
+    f->part = 1;
+    second->part = 2;
+    f->split_row = second->split_row = split_row;
+    if (split_row != 0) { /* else zl_frame_split_resolve, in planning */
+        set_rows(f, split_row);
+        set_rows(second, split_row);
+    }
+    return ZL_OK;
+}
+
+/* A part's half of every mesh's vertices not cached by the submission: the
+ * first part the vertices [0, n / 2) of the n of the frame, the second the
+ * rest, mesh by mesh. */
+zl_status zl_frame_prepare(zl_frame *f)
+{
+    uint32_t half, from, to;
+    uint16_t mi;
+    if (f == NULL || f->part == 0 || f->prepared || f->planned)
+        return ZL_ERR_ARG;
+    half = f->vertex_count / 2u;
+    from = f->part == 1 ? 0 : half;
+    to = f->part == 1 ? half : f->vertex_count;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        uint32_t a = m->vert_base, b = m->vert_base + m->mesh.vertex_count;
+        zl_source s;
+        if ((m->flags & MESH_CACHED) || b <= from || a >= to)
+            continue;
+        if (a < from)
+            a = from;
+        if (b > to)
+            b = to;
+        source_of(f, m, &s);
+        /* the submission checked the transform limits: ZL_OK */
+        (void)zl_cache_vertices(&s, cache_of(f) + m->vert_base, (uint16_t)(a - m->vert_base),
+                                (uint16_t)(b - a));
+    }
+    f->prepared = 1;
     return ZL_OK;
 }

@@ -5,10 +5,12 @@
  * the SSE-200 system control element's CPUWAIT register until core 0 points
  * INITSVTOR1 at core1_vectors and clears CPUWAIT bit 1. Then, for the
  * benchmark bunny and the triangle-rate scene (scenes.c), core 0 submits
- * the frame and splits it (zl_frame_split), publishes it through a flag,
- * renders the rows above the split while core 1 renders the rows below
- * into the same whole-frame image (disjoint rows), and waits for core 1's
- * "done" flag. The image (colour then depth, golden.c's layout) is written
+ * the frame (cfg.parts = 2) and splits it (zl_frame_split), publishes it
+ * through a flag; each core transforms its half of the vertices
+ * (zl_frame_prepare), both meet at the barrier, then core 0 renders the
+ * rows above the split while core 1 renders the rows below into the same
+ * whole-frame image (disjoint rows), and core 0 waits for core 1's "done"
+ * flag. The image (colour then depth, golden.c's layout) is written
  * through semihosting as an521-SCENE-scanline.bin; CTest dual_an521
  * (compare-dual.cmake) requires it to equal the host's single-core
  * scanline rendering (zline-golden-host's host-SCENE-scanline.bin) byte for
@@ -43,8 +45,19 @@ static uint64_t work1[96 * 1024 / 8]; /* core 1's part (zl_frame_part_bytes) */
 
 /* What core 0 hands core 1 for a frame, and the flags (frame numbers). */
 static zl_frame second;
-static volatile uint32_t go, done;
+static volatile uint32_t go, prepared[2], done;
 static volatile int32_t core1_result;
+
+/* zline.h's barrier after zl_frame_prepare: this core's flag, then the
+ * other's awaited; DMB on both sides. */
+static void barrier(unsigned core, uint32_t frame_no)
+{
+    dmb();
+    prepared[core] = frame_no;
+    while (prepared[core ^ 1u] != frame_no)
+        ;
+    dmb();
+}
 
 /* ---------------------------------------------------------------- core 1 */
 
@@ -71,7 +84,10 @@ static void core1_main(void)
             ;
         seen = go;
         dmb(); /* the frame core 0 published before `go` */
-        r = zl_frame_render(&second, copy_band, NULL);
+        r = zl_frame_prepare(&second);
+        barrier(1, seen);
+        if (r == 0)
+            r = zl_frame_render(&second, copy_band, NULL);
         core1_result = r;
         dmb(); /* its rows and result before `done` */
         done = seen;
@@ -129,6 +145,7 @@ static int config_for(const scene *s, zl_frame_config *cfg)
     needs = zl_frame_needs(&f);
     cfg->max_triangles = needs.triangles > 0 ? needs.triangles : 1;
     cfg->max_active = needs.active > 0 ? needs.active : 1;
+    cfg->parts = 2; /* the vertex transform shared by both cores */
     return zl_frame_part_bytes(cfg) > sizeof work1;
 }
 
@@ -164,16 +181,19 @@ static int render_split(const scene *s, uint32_t frame_no)
         zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK ||
         zl_frame_split(&f, &second, work1, sizeof work1, 0) != ZL_OK)
         return 1;
-    printf("dual: %s split at row %u\n", s->name, (unsigned)second.next_row);
     dmb(); /* the frame and `second` before `go` */
     go = frame_no;
-    r = zl_frame_render(&f, copy_band, NULL);
+    r = zl_frame_prepare(&f);
+    barrier(0, frame_no);
+    if (r == 0)
+        r = zl_frame_render(&f, copy_band, NULL);
     while (done != frame_no)
         if (++spins == 0x40000000u) {
             printf("dual: %s: core 1 did not finish\n", s->name);
             return 1;
         }
     dmb(); /* core 1's rows after `done` */
+    printf("dual: %s split at row %u\n", s->name, (unsigned)f.end_row);
     if (r != 0 || core1_result != 0) {
         printf("dual: %s: rendering failed (%d, %d)\n", s->name, r, (int)core1_result);
         return 1;
