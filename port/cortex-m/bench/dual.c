@@ -18,6 +18,12 @@
  *
  * QEMU's AN521 cores have no FPU: built soft-float (ZLINE_FLOAT_ABI=soft).
  *
+ * Per-core counts: mark() (tools/qemu-vcpu-count, measure-an521.sh) on
+ * core 0 before and after a single-core frame (m0, m1), before and after
+ * the submission and split (m2, m3), after its prepare (m4), after the
+ * barrier (m5) and after its bands (m6); on core 1 after `go` (n0), after
+ * its prepare (n1), after the barrier (n2) and after its bands (n3).
+ *
  * The flag protocol is zline.h's (two cores, one frame): a DMB before each
  * flag store, a DMB after each flag is seen. `go` and `done` count frames,
  * so no flag is ever reset.
@@ -38,6 +44,14 @@
 #define CPUWAIT (*(volatile uint32_t *)(SSE200_SYSCTL + 0x118u))
 
 #define dmb() __asm__ volatile("dmb" ::: "memory")
+
+/* The hook of the per-core instruction count (tools/qemu-vcpu-count: each
+ * vCPU's count at every entry of mark(); measure-an521.sh reads them). */
+void mark(void) __attribute__((noinline, used));
+void mark(void)
+{
+    __asm__ volatile("" ::: "memory");
+}
 
 static uint16_t image[2 * W * H];
 static uint64_t work[160 * 1024 / 8];
@@ -84,10 +98,14 @@ static void core1_main(void)
             ;
         seen = go;
         dmb(); /* the frame core 0 published before `go` */
+        mark(); /* core 1: n0 */
         r = zl_frame_prepare(&second);
+        mark(); /* n1 */
         barrier(1, seen);
+        mark(); /* n2 */
         if (r == 0)
             r = zl_frame_render(&second, copy_band, NULL);
+        mark(); /* n3 */
         core1_result = r;
         dmb(); /* its rows and result before `done` */
         done = seen;
@@ -166,6 +184,23 @@ static int save(const char *scene_name)
     return !ok;
 }
 
+/* The same frame on core 0 alone (cfg.parts = 0): the reference count of
+ * the per-core table, between marks m0 and m1. */
+static int render_single(const scene *s, zl_frame_config cfg)
+{
+    zl_frame f;
+    zl_rgb bg = {20, 24, 32};
+    int r;
+    cfg.parts = 0;
+    mark(); /* core 0: m0 */
+    if (zl_frame_begin(&f, &cfg, work, zl_frame_bytes(&cfg), bg, 65535) != ZL_OK ||
+        zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK)
+        return 1;
+    r = zl_frame_render(&f, copy_band, NULL);
+    mark(); /* m1 */
+    return r != 0;
+}
+
 static int render_split(const scene *s, uint32_t frame_no)
 {
     zl_frame_config cfg;
@@ -177,16 +212,24 @@ static int render_split(const scene *s, uint32_t frame_no)
         printf("dual: %s: cannot plan the frame\n", s->name);
         return 1;
     }
+    if (render_single(s, cfg) != 0)
+        return 1;
+    memset(image, 0, sizeof image);
+    mark(); /* m2 */
     if (zl_frame_begin(&f, &cfg, work, zl_frame_bytes(&cfg), bg, 65535) != ZL_OK ||
         zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK ||
         zl_frame_split(&f, &second, work1, sizeof work1, 0) != ZL_OK)
         return 1;
+    mark(); /* m3 */
     dmb(); /* the frame and `second` before `go` */
     go = frame_no;
     r = zl_frame_prepare(&f);
+    mark(); /* m4 */
     barrier(0, frame_no);
+    mark(); /* m5 */
     if (r == 0)
         r = zl_frame_render(&f, copy_band, NULL);
+    mark(); /* m6 */
     while (done != frame_no)
         if (++spins == 0x40000000u) {
             printf("dual: %s: core 1 did not finish\n", s->name);
