@@ -372,16 +372,21 @@ static ZL_NOINLINE void place_fill_seen(zl_frame *f, plan_pass *p, const zl_fram
  * first_centre_at_or_after(ymax) is above lo, that is ymax > y_lo = lo * ONE
  * + HALF. A vertex at a time, so the other part's triangles cost a few
  * compares (classify_cached then tests as for one core). */
-static ZL_ALWAYS_INLINE int in_rows(int32_t a, int32_t b, int32_t c, int32_t y_lo, int32_t y_hi)
+static ZL_ALWAYS_INLINE int in_rows(int32_t a, int32_t b, int32_t c, int32_t y_lo, int32_t y_hi, int part)
 {
-    return (a <= y_hi || b <= y_hi || c <= y_hi) && (a > y_lo || b > y_lo || c > y_lo);
+    /* the first part's rows start at 0, where classify_cached tests the
+     * end row anyway; the second's end at the height, where it tests the
+     * first: one side each */
+    if (part == 1)
+        return a <= y_hi || b <= y_hi || c <= y_hi;
+    return a > y_lo || b > y_lo || c > y_lo;
 }
 
 /* classify_fill for one part of a split frame: without the bit array (the
  * keys' second pass places by classifying again), triangles outside the
  * part's rows dropped first. */
-static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
-                                             const zl_style *sty)
+static ZL_ALWAYS_INLINE void fill_window(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                         const zl_style *sty, int part)
 {
     uint16_t w = f->cfg.width, h = f->cfg.height;
     uint32_t t, count = m->mesh.triangle_count, n = p->n, id = m->tri_base;
@@ -401,7 +406,7 @@ static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl
             n = p->n;
             continue;
         }
-        if (!in_rows(c0->y, c1->y, c2->y, y_lo, y_hi) ||
+        if (!in_rows(c0->y, c1->y, c2->y, y_lo, y_hi, part) ||
             !classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
             continue;
         if (diff == NULL) {
@@ -422,6 +427,18 @@ static ZL_NOINLINE void classify_fill_window(zl_frame *f, plan_pass *p, const zl
     p->n = n;
 }
 
+static ZL_NOINLINE void classify_fill_first(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                            const zl_style *sty)
+{
+    fill_window(f, p, m, s, sty, 1);
+}
+
+static ZL_NOINLINE void classify_fill_second(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                             const zl_style *sty)
+{
+    fill_window(f, p, m, s, sty, 2);
+}
+
 /* classify_pass for one part of a split frame. */
 static ZL_NOINLINE uint32_t classify_pass_window(zl_frame *f, plan_pass *p)
 {
@@ -436,8 +453,10 @@ static ZL_NOINLINE uint32_t classify_pass_window(zl_frame *f, plan_pass *p)
             classify_lines(f, p, mi, &s);
         else if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
             classify_pieces(f, p, m, &s, sty);
+        else if (f->part == 1)
+            classify_fill_first(f, p, m, &s, sty);
         else
-            classify_fill_window(f, p, m, &s, sty);
+            classify_fill_second(f, p, m, &s, sty);
     }
     return p->n;
 }
