@@ -363,7 +363,7 @@ static int config_for(const scene *s, zl_frame_config *cfg)
     return zl_frame_bytes(cfg) > sizeof work;
 }
 
-#if BENCH_SPLIT
+#if defined(BENCH_SPLIT) && BENCH_SPLIT
 /*
  * Two cores, one frame (zl_frame_split, issue 27) for the bunny and the
  * triangle-rate scene, cfg.parts = 2, the two parts run one after the
