@@ -330,8 +330,12 @@ static int run_scene(const scene *s)
 /* --------------------------------------------------------- scanline mode */
 
 /* Large enough for every scene at one-row bands (exact need printed), and
- * for run_split's second part after the frame's own buffer. */
+ * with BENCH_SPLIT for run_split's second part after the frame's own. */
+#if defined(BENCH_SPLIT) && BENCH_SPLIT
 static uint64_t work[100 * 1024 / 8];
+#else
+static uint64_t work[96 * 1024 / 8];
+#endif
 
 static int config_for(const scene *s, zl_frame_config *cfg)
 {
