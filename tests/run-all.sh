@@ -14,7 +14,8 @@
 #   3b. a sample of 3 mutations (tools/mutation/mutate.py, chosen by the date):
 #       each must make the host suite fail
 #      (and, issue 11: for the hard-float M4F and M7, M33 and M55 on their
-#      boards, the M4F once more at -O0 (issue 24); then the consumer tests of tests/consumer/run.sh)
+#      boards, the M4F once more at -O0 (issue 24), the two-core firmware on the
+#      dual Cortex-M33 mps2-an521 (issue 27); then the consumer tests of tests/consumer/run.sh)
 #      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
 #   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
 #   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 60) seconds,
@@ -32,8 +33,9 @@ run() { # run NAME CMAKE-ARGS...
     name=$1; shift
     echo "=== $name"
     cmake -S . -B "build/ci-$name" "$@" >/dev/null
-    cmake --build "build/ci-$name" -j "$jobs" >/dev/null
-    ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} | tee "$log"
+    cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target "$BUILD_TARGET"} >/dev/null
+    ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} \
+        ${CTEST_INCLUDE:+-R "$CTEST_INCLUDE"} | tee "$log"
     # set -e does not see a failure inside a pipeline: check ctest's summary
     grep -q "tests passed, 0 tests failed out of" "$log" || exit 1
     # A skipped test (missing ../shared models, an ignored Unity case) is
@@ -69,6 +71,13 @@ for cpu in cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
         -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu"
 done
 CTEST_EXCLUDE=
+# Issue 27: two cores, one frame on QEMU mps2-an521 (two Cortex-M33 without
+# an FPU: soft float): the firmware (port/cortex-m/bench/dual.c) and its
+# comparison with the host's single-core frames (CTest dual_an521) and each
+# core's instruction budgets (dual_an521_budgets) alone; about 45 s.
+BUILD_TARGET=dual CTEST_INCLUDE='^dual_an521' run cortex-m33-an521 -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU=cortex-m33 -DZLINE_FLOAT_ABI=soft
+BUILD_TARGET= CTEST_INCLUDE=
 # Issue 24: the portable suite built without optimisation (CMake's Debug:
 # -g, no -O, the compiler's -O0) on the hard-float Cortex-M4F, where the
 # inline assembly once failed to compile; about 45 s.

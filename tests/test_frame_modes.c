@@ -17,6 +17,14 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+#ifdef ZT_FRAME_DUAL
+/* tests/host/test_frame_dual.c: this file's scenes rendered by two threads
+ * (zl_frame_split at a random row); fn gets user_first from the first, and
+ * user_second from the second. Returns zl_frame_render's results, or-ed. */
+int zt_dual_render(zl_frame *f, zl_band_fn fn, void *user_first, void *user_second);
+void zt_dual_tests(void);
+#endif
+
 enum { W = 48, H = 40, NV = 24, NT = 16, NMESH = 3 };
 
 static uint32_t rng = 12345u;
@@ -213,6 +221,9 @@ static void config_for(zl_frame_config *c, zl_format fmt, uint16_t band)
     c->textured = (uint8_t)styled;
     if (styled) /* outlines: a primitive per edge */
         c->max_triangles = NT * NMESH * 3;
+#ifdef ZT_FRAME_DUAL
+    c->parts = (uint8_t)((next_rand() & 1u) ? 2 : 0); /* the vertex transform in the parts or not */
+#endif
 }
 
 typedef struct {
@@ -299,7 +310,16 @@ static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t
     cc.fmt = fmt;
     cc.rows_seen = 0;
     cc.mismatches = 0;
+#ifdef ZT_FRAME_DUAL
+    {
+        compare_ctx second = cc;
+        TEST_ASSERT_EQUAL_INT(0, zt_dual_render(&f, compare_band, &cc, &second));
+        cc.rows_seen += second.rows_seen;
+        cc.mismatches += second.mismatches;
+    }
+#else
     TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, compare_band, &cc));
+#endif
     TEST_ASSERT_EQUAL_INT(H, cc.rows_seen);
     TEST_ASSERT_EQUAL_INT(0, cc.mismatches);
     TEST_ASSERT_EQUAL_UINT_MESSAGE(0, work_guard_damage(bytes), "bytes around the work buffer written");
@@ -560,5 +580,8 @@ int main(void)
     RUN_TEST(test_capacity_error_before_any_row);
     RUN_TEST(test_pull_form_and_double_buffering);
     RUN_TEST(test_many_triangles_few_active);
+#ifdef ZT_FRAME_DUAL
+    zt_dual_tests();
+#endif
     return UNITY_END();
 }

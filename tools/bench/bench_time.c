@@ -14,6 +14,10 @@
  *   frame, default call   zl_draw_mesh as zl_init leaves the context
  *   scanline              zl_frame_render with one-row bands, RAM as small
  *                         as the scene allows (zl_frame_needs)
+ *   scanline, 2 threads   the same frame split across two POSIX threads
+ *                         (zl_frame_split, cfg.parts = 2): this thread and a
+ *                         worker started once, meeting at barriers (start,
+ *                         prepared, done) every frame
  * Each frame includes its clear. Every frame is timed on its own
  * (CLOCK_MONOTONIC) after a warm-up, the modes taking turns in rounds; the
  * table gives the median, which a few preempted frames do not move, and
@@ -27,7 +31,8 @@
  * Times depend on the machine and its load; docs/MEASUREMENTS.md quotes them with the
  * machine they were measured on, never as a budget.
  */
-#define _POSIX_C_SOURCE 199309L
+#define _POSIX_C_SOURCE 200112L /* clock_gettime, pthread_barrier_t */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,6 +54,8 @@ typedef struct {
     size_t vertex_cache_bytes;
     void *work; /* scanline mode's work buffer */
     size_t work_bytes;
+    void *work2; /* the second thread's (zl_frame_part_bytes) */
+    size_t work2_bytes;
     zl_frame_config config;
     /* bunny_smooth: lit again every frame into lit (the mesh's colours) */
     const zl_lighting *lighting;
@@ -93,6 +100,46 @@ static void draw_scanline(const scene *s)
     light(s);
     if (zl_frame_begin(&f, &s->config, s->work, s->work_bytes, background, 65535) != ZL_OK ||
         zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK || zl_frame_render(&f, copy_row, NULL) != 0)
+        exit(2);
+}
+
+/* The two-thread frame: the worker renders `second` of each frame between
+ * the barriers; `quit` (read after the start barrier) ends it. */
+static pthread_barrier_t start_frame, prepared, frame_done;
+static zl_frame second;
+static int quit, worker_failed;
+
+static void *worker(void *arg)
+{
+    (void)arg;
+    for (;;) {
+        int bad;
+        pthread_barrier_wait(&start_frame);
+        if (quit)
+            return NULL;
+        bad = zl_frame_prepare(&second) != ZL_OK;
+        pthread_barrier_wait(&prepared);
+        bad |= zl_frame_render(&second, copy_row, NULL) != 0;
+        worker_failed |= bad;
+        pthread_barrier_wait(&frame_done);
+    }
+}
+
+static void draw_two_threads(const scene *s)
+{
+    zl_frame f;
+    int bad;
+    light(s);
+    if (zl_frame_begin(&f, &s->config, s->work, s->work_bytes, background, 65535) != ZL_OK ||
+        zl_frame_add_mesh(&f, &s->mesh, &s->mvp, &s->state) != ZL_OK ||
+        zl_frame_split(&f, &second, s->work2, s->work2_bytes, 0) != ZL_OK)
+        exit(2);
+    pthread_barrier_wait(&start_frame);
+    bad = zl_frame_prepare(&f) != ZL_OK;
+    pthread_barrier_wait(&prepared);
+    bad |= zl_frame_render(&f, copy_row, NULL) != 0;
+    pthread_barrier_wait(&frame_done);
+    if (bad || worker_failed)
         exit(2);
 }
 
@@ -214,10 +261,10 @@ static int shade(scene *s, int k, const zl_obj *obj, uint8_t *colors, zl_lightin
 static int run_scene(const char *scene_name, const scene *base, int frames)
 {
     static const char *names[] = {"frame + vertex cache", "frame, default call (no caller cache)",
-                                  "scanline (one-row bands)"};
-    static const draw_fn draws[] = {draw_frame, draw_frame, draw_scanline};
-    scene s[3];
-    double *ms[3];
+                                  "scanline (one-row bands)", "scanline, 2 threads (zl_frame_split)"};
+    static const draw_fn draws[] = {draw_frame, draw_frame, draw_scanline, draw_two_threads};
+    scene s[4];
+    double *ms[4];
     int failed = 0;
     unsigned m;
     s[0] = *base;
@@ -227,11 +274,20 @@ static int run_scene(const char *scene_name, const scene *base, int frames)
     s[1].vertex_cache = NULL;
     s[1].vertex_cache_bytes = 0;
     s[2] = s[1];
-    for (m = 0; m < 3; m++)
+    for (m = 0; m < 4; m++)
         ms[m] = malloc((size_t)frames * sizeof *ms[m]);
-    if (s[0].vertex_cache == NULL || ms[0] == NULL || ms[1] == NULL || ms[2] == NULL || scanline_setup(&s[2]) == NULL)
+    if (s[0].vertex_cache == NULL || ms[0] == NULL || ms[1] == NULL || ms[2] == NULL || ms[3] == NULL ||
+        scanline_setup(&s[2]) == NULL)
         exit(2);
-    for (m = 0; m < 3; m++) {
+    s[3] = s[2];
+    s[3].config.parts = 2;
+    s[3].work_bytes = zl_frame_bytes(&s[3].config);
+    s[3].work = malloc(s[3].work_bytes);
+    s[3].work2_bytes = zl_frame_part_bytes(&s[3].config);
+    s[3].work2 = malloc(s[3].work2_bytes);
+    if (s[3].work == NULL || s[3].work2 == NULL)
+        exit(2);
+    for (m = 0; m < 4; m++) {
         draws[m](&s[m]);
         if (m == 0)
             memcpy(reference, color, sizeof color);
@@ -240,14 +296,16 @@ static int run_scene(const char *scene_name, const scene *base, int frames)
             failed = 1;
         }
     }
-    time_modes(draws, s, 3, ms, frames);
-    for (m = 0; m < 3; m++) {
+    time_modes(draws, s, 4, ms, frames);
+    for (m = 0; m < 4; m++) {
         qsort(ms[m], (size_t)frames, sizeof *ms[m], by_value);
         printf("| %s | %s | %.4f | %.4f |\n", scene_name, names[m], ms[m][frames / 2], ms[m][0]);
         free(ms[m]);
     }
     free(s[0].vertex_cache);
     free(s[2].work);
+    free(s[3].work);
+    free(s[3].work2);
     return failed;
 }
 
@@ -259,6 +317,7 @@ int main(int argc, char **argv)
     zl_lighting lighting;
     zl_mat4 view;
     uint8_t *colors;
+    pthread_t worker_thread;
     int frames = argc == 3 ? atoi(argv[2]) : 2001, failed = 0, k;
     if (argc < 2 || argc > 3 || frames < 1 || frames > 1000000) {
         fprintf(stderr, "usage: %s MODEL [FRAMES 1..1000000]\n", argv[0]);
@@ -272,6 +331,9 @@ int main(int argc, char **argv)
     colors = malloc(3u * base.mesh.vertex_count + 1u);
     if (colors == NULL)
         return 2;
+    if (pthread_barrier_init(&start_frame, NULL, 2) != 0 || pthread_barrier_init(&prepared, NULL, 2) != 0 ||
+        pthread_barrier_init(&frame_done, NULL, 2) != 0 || pthread_create(&worker_thread, NULL, worker, NULL) != 0)
+        return 2;
     printf("| scene | mode | median ms/frame | fastest ms/frame |\n|---|---|---:|---:|\n");
     for (k = 0; k < 3; k++) {
         scene s = base;
@@ -279,6 +341,9 @@ int main(int argc, char **argv)
             return 2;
         failed |= run_scene(scene_names[k], &s, frames);
     }
+    quit = 1;
+    pthread_barrier_wait(&start_frame);
+    pthread_join(worker_thread, NULL);
     printf("\n%d frames per mode after %d warm-up frames, in rounds of %d a mode, %dx%d RGB565; bunny_smooth's "
            "frames include zl_light_vertices.\n",
            frames, WARMUP_FRAMES, ROUND_FRAMES, BENCH_W, BENCH_H);

@@ -809,6 +809,9 @@ typedef struct {
                                and by zl_frame_add_mesh_styled with a non-default style */
     uint8_t textured;       /* reserve texture / perspective planes per active record
                                (textures, perspective-correct Gouraud) */
+    uint8_t parts;          /* 2: the frame will be split across two cores (zl_frame_split):
+                               the submission leaves the vertex transform to the
+                               parts' zl_frame_prepare, which share it; 0 or 1: one */
 } zl_frame_config;
 
 /* A finished band: rows first_row .. first_row + rows - 1. */
@@ -837,8 +840,12 @@ typedef struct {
     zl_rgb clear_color;
     uint16_t clear_depth;
     uint16_t next_row;       /* first row of the next band */
+    uint16_t end_row;        /* rows end here: height, or the split row (zl_frame_split) */
     uint8_t planned;
     uint8_t band_index;
+    uint8_t part;            /* 0: a whole frame; 1, 2: the first, second part of a split one */
+    uint8_t prepared;        /* a part: zl_frame_prepare done */
+    uint16_t split_row;      /* a part: the row asked of zl_frame_split (0: balanced) */
     uint16_t mesh_count;
     uint32_t vertex_count;
     uint32_t triangle_total;
@@ -953,6 +960,87 @@ zl_status zl_frame_begin_abi(uint32_t abi_key, zl_frame *f, const zl_frame_confi
                              size_t work_bytes, zl_rgb clear_color, uint16_t clear_depth);
 #define zl_init(...) zl_init_abi(ZL_ABI_KEY, __VA_ARGS__)
 #define zl_frame_begin(...) zl_frame_begin_abi(ZL_ABI_KEY, __VA_ARGS__)
+/* ------------------------------------------------- two cores, one frame */
+
+/*
+ * A frame split across two cores (or threads) by halves: the first core
+ * renders rows 0 .. split - 1 through the zl_frame it submitted to, the
+ * second rows split .. height - 1 through a second zl_frame that
+ * zl_frame_split makes from it. Halves rather than interleaved bands: a
+ * core planning only its rows drops the other half's triangles before any
+ * setup, and only triangles crossing the split row are set up on both cores
+ * (interleaved bands would set up every triangle that crosses a band edge
+ * twice: every triangle taller than one row in scanline mode).
+ *
+ * Per frame:
+ *   first core                          second core
+ *   zl_frame_begin (cfg.parts = 2)
+ *   zl_frame_add_* (the submission)
+ *   zl_frame_split(f, &second, ...)
+ *   signal the second core  ----------> wait for the signal
+ *   zl_frame_prepare(f)                 zl_frame_prepare(&second)
+ *   ---------------------- the barrier: both prepared ----------------------
+ *   zl_frame_next_band / zl_frame_render on f, and on &second, as usual
+ *   wait for the second's "done" <----- signal "done"
+ * zl_frame_prepare transforms the part's half of the vertices into the
+ * shared vertex cache (with cfg.parts = 2; without it the submission did
+ * them all, serially). After the barrier each part's first band classifies
+ * the triangles of its rows into its own edge table (both parts read the
+ * whole vertex cache: hence the barrier), the second part also walking, into
+ * a scratch row it does not hand out, the rows above the split of the
+ * triangles crossing it, so that its records reach the split row exactly as
+ * one core's would. The split row, unless given, is the one with half the
+ * cached vertices above it (both parts compute the same), rounded down to a
+ * multiple of band_rows. A part hands out its own rows' bands, in order,
+ * each with its first_row (zl_band): a display with a row window takes them
+ * as they come; one that takes rows only in order must keep the second
+ * part's bands (or let it wait) until the first part is done. Pixels are
+ * byte-identical to one core's (tests/host/test_frame_dual.c,
+ * port/cortex-m/bench/dual.c).
+ *
+ * Memory. The first core's work buffer (zl_frame_bytes) holds the shared
+ * part: the mesh records and style records (written by the submission
+ * only) and the vertex cache (each part writes its half in
+ * zl_frame_prepare, both read all of it after the barrier), and the first
+ * part's own regions. The second core's work buffer (zl_frame_part_bytes)
+ * holds what each part has its own of: edge table (height + 1 row starts,
+ * max_triangles ids), active records (and their Gouraud and texture
+ * records), depth band and colour band(s). Each core writes only its own
+ * zl_frame, its own regions and its half of the vertex cache; the meshes,
+ * matrices, states, textures and colour arrays are read by both and must
+ * not change until both are done. Both parts must be prepared and rendered
+ * (or both abandoned) before zl_frame_begin reuses either work buffer.
+ *
+ * Synchronisation (no locks and no OS calls in the library): the caller
+ *   1. after zl_frame_split, on the first core: a memory barrier (DMB on
+ *      Cortex-M, `fence rw,w` on RISC-V, a release store or pthread_create
+ *      on a host), then starts or signals the second core (a flag it polls);
+ *      the second core, after seeing it: a barrier (DMB; `fence r,rw`; an
+ *      acquire load) before touching the frame;
+ *   2. the barrier after zl_frame_prepare: each core, a memory barrier, then
+ *      its "prepared" flag, then it waits for the other's, then a memory
+ *      barrier (or pthread_barrier_wait);
+ *   3. on the second core, when its last band is out: a barrier, then its
+ *      "done" flag; the first core waits for it (and a barrier) before
+ *      zl_frame_begin reuses either work buffer.
+ * Uncached or write-through shared RAM is assumed (as on RP2040, RP2350 and
+ * the SSE-200); a part with data caches also needs its cache maintenance.
+ */
+/* Bytes of the second core's work buffer: zl_frame_bytes minus the mesh
+ * records and the vertex cache (with cfg.styled the style records' room is
+ * kept, unused); 0 if cfg is invalid. */
+size_t zl_frame_part_bytes(const zl_frame_config *cfg);
+/* Split f (begun, submitted, not yet planned) at row `split_row` (0: the
+ * balanced row, see above; else rounded down to a multiple of band_rows, at
+ * most height) and make `second`, in `work` (8-byte aligned, >=
+ * zl_frame_part_bytes), the frame of the rows below it. ZL_ERR_ARG if f is
+ * not in that state or an argument is NULL or misaligned, ZL_ERR_SIZE if
+ * work_bytes is short. */
+zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_bytes, uint16_t split_row);
+/* A part's share of the vertex transform, once, before the barrier; its
+ * first zl_frame_next_band without it is ZL_ERR_ARG. ZL_ERR_ARG if f is not
+ * a part of a split frame or is prepared already. */
+zl_status zl_frame_prepare(zl_frame *part);
 
 #ifdef __cplusplus
 }

@@ -39,7 +39,7 @@ int zl_frame_layout(const zl_frame_config *c, layout *l)
     if (c->width < 1 || c->height < 1 || c->width > ZL_MAX_DIM || c->height > ZL_MAX_DIM || bpp == 0 ||
         c->band_rows < 1 || c->band_rows > c->height || c->color_buffers < 1 || c->color_buffers > 2 ||
         c->max_meshes < 1 || c->max_meshes > 255 || c->max_triangles > 65535 || c->max_active < 1 ||
-        c->max_active > 65534 || c->max_vertices > 65535u * 255u)
+        c->max_active > 65534 || c->max_vertices > 65535u * 255u || c->parts > 2)
         return 0;
     band_px = (size_t)c->width * c->band_rows;
     pool = (size_t)c->max_active * sizeof(zl_active);
@@ -88,6 +88,7 @@ zl_status(zl_frame_begin)(zl_frame *f, const zl_frame_config *cfg, void *work, s
     f->cfg = *cfg;
     f->clear_color = clear_color;
     f->clear_depth = clear_depth;
+    f->end_row = cfg->height;
     f->meshes = (zl_frame_mesh *)(void *)(w + l.meshes);
     f->vcache = w + l.vcache;
     f->row_start = (uint16_t *)(void *)(w + l.row_start);
@@ -184,7 +185,8 @@ static zl_status check_and_cache(const zl_frame *f, const zl_mesh *mesh, const z
     *cached = 0;
     if (st != ZL_OK)
         return st;
-    if (mvp == NULL || mesh->vertex_count == 0 || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices)
+    if (mvp == NULL || mesh->vertex_count == 0 || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices ||
+        f->cfg.parts == 2) /* a split frame's parts transform (zl_frame_prepare) */
         return zl_check_positions(mesh->positions, mesh->vertex_count, mvp);
     s.mesh = mesh;
     s.mvp = mvp;

@@ -80,6 +80,10 @@ ZL_SHARED_STATIC int prim_record(const zl_frame *f, unsigned mi, const zl_source
 /* Offsets of every region of the work buffer (zl_frame.c); 0 when the
  * configuration is invalid. */
 int zl_frame_layout(const zl_frame_config *c, layout *l);
+/* A part of a split frame asked for the balanced split row: the row with
+ * half the cached vertices above it, set as the part's window
+ * (zl_frame_split.c; both parts compute the same). */
+void zl_frame_split_resolve(zl_frame *f);
 /* Planning, on the first band (zl_frame_plan.c). */
 zl_status zl_frame_plan(zl_frame *f);
 

@@ -35,6 +35,7 @@ typedef struct {
     uint32_t n;              /* visible primitives so far */
     uint8_t *seen;           /* NULL, or a bit per filled triangle id: visible (count pass) */
     int marking;             /* the keys ran out: the count pass marks seen instead */
+    int32_t lo, hi;          /* the rows planned: a primitive outside [lo, hi) is dropped */
 } plan_pass;
 
 static ZL_ALWAYS_INLINE void mark_seen(const plan_pass *p, uint32_t id)
@@ -48,8 +49,11 @@ static uint16_t *key_at(const plan_pass *p, uint32_t k)
 }
 
 /* Record visible primitive id with row range [first, end) and its pieces. */
-static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+static ZL_ALWAYS_INLINE void note_rows(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end,
+                                       unsigned pieces, int window)
 {
+    if (window && (first >= p->hi || end <= p->lo)) /* the other part of a split frame's */
+        return;
     if (p->diff == NULL) {
         f->visible[f->row_start[first]++] = (uint16_t)id;
     } else {
@@ -62,6 +66,12 @@ static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_
             *key_at(p, p->n) = (uint16_t)first;
     }
     p->n++;
+}
+
+/* note_rows for a part of a split frame (p's rows only) or a whole one. */
+static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
+{
+    note_rows(f, p, id, first, end, pieces, f->part != 0);
 }
 
 /* Lines and outline records: one record per primitive. Out of line, like the
@@ -162,8 +172,8 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
 /* Filled triangle t that needs clipping (or is dropped): the row range of
  * every fan triangle of its polygon. Out of line, so the polygon is not on
  * the stack (nor in the registers) of the loop below. */
-static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
-                                         const zl_style *sty, uint32_t t)
+static ZL_ALWAYS_INLINE void polygon_rows(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                          const zl_style *sty, uint32_t t, int window)
 {
     zl_poly poly;
     unsigned k, pieces = 0;
@@ -181,7 +191,20 @@ static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_fra
             end = b;
     }
     if (pieces != 0)
-        note(f, p, m->tri_base + t, first, end, pieces);
+        note_rows(f, p, m->tri_base + t, first, end, pieces, window);
+}
+
+static ZL_NOINLINE void classify_polygon(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                         const zl_style *sty, uint32_t t)
+{
+    polygon_rows(f, p, m, s, sty, t, 0);
+}
+
+/* classify_polygon for a part of a split frame: its rows only. */
+static ZL_NOINLINE void classify_polygon_window(zl_frame *f, plan_pass *p, const zl_frame_mesh *m,
+                                                const zl_source *s, const zl_style *sty, uint32_t t)
+{
+    polygon_rows(f, p, m, s, sty, t, 1);
 }
 
 /* classify_fill's count pass when a bit array follows the keys (p->seen):
@@ -343,6 +366,101 @@ static ZL_NOINLINE void place_fill_seen(zl_frame *f, plan_pass *p, const zl_fram
     }
 }
 
+/* Whether a triangle with these window y (subpixels) crosses a row in
+ * [lo, hi): its first row first_centre_at_or_after(ymin) is below hi, that
+ * is ymin <= y_hi = (hi - 1) * ONE + HALF, and its end row
+ * first_centre_at_or_after(ymax) is above lo, that is ymax > y_lo = lo * ONE
+ * + HALF. A vertex at a time, so the other part's triangles cost a few
+ * compares (classify_cached then tests as for one core). */
+static ZL_ALWAYS_INLINE int in_rows(int32_t a, int32_t b, int32_t c, int32_t y_lo, int32_t y_hi, int part)
+{
+    /* the first part's rows start at 0, where classify_cached tests the
+     * end row anyway; the second's end at the height, where it tests the
+     * first: one side each */
+    if (part == 1)
+        return a <= y_hi || b <= y_hi || c <= y_hi;
+    return a > y_lo || b > y_lo || c > y_lo;
+}
+
+/* classify_fill for one part of a split frame: without the bit array (the
+ * keys' second pass places by classifying again), triangles outside the
+ * part's rows dropped first. */
+static ZL_ALWAYS_INLINE void fill_window(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                         const zl_style *sty, int part)
+{
+    uint16_t w = f->cfg.width, h = f->cfg.height;
+    uint32_t t, count = m->mesh.triangle_count, n = p->n, id = m->tri_base;
+    uint32_t max_visible = f->cfg.max_triangles, na = p->na, nkeys = p->na + p->nb;
+    const uint16_t *idx = m->mesh.indices;
+    const zl_cached_vertex *cache = s->cache;
+    uint16_t *row_start = f->row_start, *visible = f->visible;
+    int32_t *diff = p->diff;
+    int32_t y_lo = p->lo * ZL_SUB_ONE + ZL_SUB_HALF, y_hi = (p->hi - 1) * ZL_SUB_ONE + ZL_SUB_HALF;
+    int cull_sign = (int)m->cull_code - 1;
+    for (t = 0; t < count; t++, id++, idx += 3) {
+        int32_t first, end;
+        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
+            p->n = n;
+            classify_polygon_window(f, p, m, s, sty, t);
+            n = p->n;
+            continue;
+        }
+        if (!in_rows(c0->y, c1->y, c2->y, y_lo, y_hi, part) ||
+            !classify_cached(c0, c1, c2, cull_sign, w, h, &first, &end))
+            continue;
+        if (diff == NULL) {
+            visible[row_start[first]++] = (uint16_t)id;
+        } else {
+            row_start[first]++;
+            diff[first] += 1;
+            diff[end] -= 1;
+            if (n < max_visible)
+                visible[n] = (uint16_t)id;
+            if (n < na)
+                p->key_a[n] = (uint16_t)first;
+            else if (n < nkeys)
+                p->key_b[n - na] = (uint16_t)first;
+        }
+        n++;
+    }
+    p->n = n;
+}
+
+static ZL_NOINLINE void classify_fill_first(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                            const zl_style *sty)
+{
+    fill_window(f, p, m, s, sty, 1);
+}
+
+static ZL_NOINLINE void classify_fill_second(zl_frame *f, plan_pass *p, const zl_frame_mesh *m, const zl_source *s,
+                                             const zl_style *sty)
+{
+    fill_window(f, p, m, s, sty, 2);
+}
+
+/* classify_pass for one part of a split frame. */
+static ZL_NOINLINE uint32_t classify_pass_window(zl_frame *f, plan_pass *p)
+{
+    uint16_t mi;
+    p->n = 0;
+    for (mi = 0; mi < f->mesh_count; mi++) {
+        const zl_frame_mesh *m = &f->meshes[mi];
+        const zl_style *sty = style_of(f, mi);
+        zl_source s;
+        source_of(f, m, &s);
+        if (sty != NULL && ext_of(f, mi)->is_lines)
+            classify_lines(f, p, mi, &s);
+        else if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
+            classify_pieces(f, p, m, &s, sty);
+        else if (f->part == 1)
+            classify_fill_first(f, p, m, &s, sty);
+        else
+            classify_fill_second(f, p, m, &s, sty);
+    }
+    return p->n;
+}
+
 /* One pass over every primitive of every mesh; returns the visible ones. */
 static uint32_t classify_pass(zl_frame *f, plan_pass *p)
 {
@@ -436,27 +554,45 @@ static void reserve_seen(const zl_frame *f, plan_pass *p)
 zl_status zl_frame_plan(zl_frame *f)
 {
     layout l;
-    uint8_t *base = (uint8_t *)(void *)f->meshes;
+    uint8_t *pool;
+    int window = f->part != 0; /* a part of a split frame: its rows only */
     uint32_t running = 0, start = 0, peak = 0, slot, visible;
     uint16_t h = f->cfg.height, j;
     size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));
     plan_pass p;
     if (!zl_frame_layout(&f->cfg, &l)) /* cannot fail: zl_frame_begin checked the configuration */
         return ZL_ERR_ARG;
+    if (window) {
+        if (!f->prepared) /* its share of the vertex cache (zl_frame_prepare) */
+            return ZL_ERR_ARG;
+        if (f->split_row == 0)
+            zl_frame_split_resolve(f);
+    }
+    /* regions by their offsets from the pool (the second part of a split
+     * frame has the same offsets from there on: zl_frame_split) */
+    pool = (uint8_t *)(void *)f->pool;
+    p.lo = f->next_row;
+    p.hi = f->end_row;
     /* Until the first row the pool (after the difference array), the
      * Gouraud records and everything from the texture planes to the colour
      * bands are free: room for the first rows of the visible primitives,
      * which then need no second classification. */
     p.diff = (int32_t *)(void *)f->pool;
-    p.key_a = (uint16_t *)(void *)(base + l.pool + diff_bytes);
+    p.key_a = (uint16_t *)(void *)(pool + diff_bytes);
     p.na = l.ext - l.pool > diff_bytes ? (uint32_t)((l.ext - l.pool - diff_bytes) / sizeof(uint16_t)) : 0;
-    p.key_b = (uint16_t *)(void *)(base + l.tex);
+    p.key_b = (uint16_t *)(void *)(pool + (l.tex - l.pool));
     p.nb = (uint32_t)((l.total - l.tex) / sizeof(uint16_t));
-    reserve_seen(f, &p);
-    fill_cache(f);
+    if (window) { /* no bit array: a part's keys rarely run out */
+        p.seen = NULL;
+        p.marking = 0;
+    } else {
+        reserve_seen(f, &p);
+    }
+    if (!window) /* the parts cached theirs (zl_frame_prepare) */
+        fill_cache(f);
     memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
     memset(p.diff, 0, ((size_t)h + 1) * sizeof(int32_t));
-    visible = classify_pass(f, &p);
+    visible = window ? classify_pass_window(f, &p) : classify_pass(f, &p);
     f->needs.triangles = visible;
     for (j = 0; j < h; j++) {
         running += (uint32_t)p.diff[j];
@@ -476,7 +612,7 @@ zl_status zl_frame_plan(zl_frame *f)
         place_by_keys(f, &p, visible);
     } else { /* the keys did not fit: classify again */
         p.diff = NULL;
-        classify_pass(f, &p);
+        (void)(window ? classify_pass_window(f, &p) : classify_pass(f, &p));
     }
     /* The pool's free list: every record, in order. */
     for (slot = 0; slot < f->cfg.max_active; slot++)

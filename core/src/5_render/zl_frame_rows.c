@@ -520,7 +520,7 @@ static ZL_NOINLINE void render_row_plain(zl_frame *f, uint16_t y, uint16_t i, ui
     rows_walk(f, y, i, end, crow, zrow, 0, 0);
 }
 
-static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
 {
     uint16_t i = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y];
     unsigned mi, flags = 0, func = 0;
@@ -546,6 +546,27 @@ static void render_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
         render_row_lequal(f, y, i, end, crow, zrow);
 }
 
+/*
+ * The second part of a split frame (zl_frame_split) starts at row next_row,
+ * but its triangles crossing that row start above it: the rows above, from
+ * the first one of those triangles (the only ones its planning kept there),
+ * are walked into the band's first row, which is not handed out, so every
+ * record reaches the split row exactly as one core's walk leaves it.
+ */
+static ZL_NOINLINE void catch_up(zl_frame *f)
+{
+    uint16_t y = 0, w = f->cfg.width;
+    uint16_t *zrow = f->depth_band;
+    while (y < f->next_row && f->row_start[y] == 0) /* bucket ends: empty before the first */
+        y++;
+    if (y >= f->next_row)
+        return;
+    zl_fill16(zrow, f->clear_depth, w);
+    memset(f->color_band[0], 0, (size_t)w * zl_format_bytes((zl_format)f->cfg.format));
+    for (; y < f->next_row; y++)
+        render_row(f, y, f->color_band[0], zrow);
+}
+
 zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
 {
     uint16_t rows, r, w;
@@ -562,12 +583,14 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
         if (st != ZL_OK)
             return st;
         f->planned = 1;
+        if (f->next_row != 0) /* the second part of a split frame */
+            catch_up(f);
     }
-    if (f->next_row >= f->cfg.height)
+    if (f->next_row >= f->end_row)
         return ZL_DONE;
     w = f->cfg.width;
     bpp = zl_format_bytes((zl_format)f->cfg.format);
-    rows = (uint16_t)(f->cfg.height - f->next_row);
+    rows = (uint16_t)(f->end_row - f->next_row);
     if (rows > f->cfg.band_rows)
         rows = f->cfg.band_rows;
     color = f->color_band[f->band_index];

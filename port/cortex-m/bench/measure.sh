@@ -196,6 +196,22 @@ for s in $scenes; do
     done
 done
 echo
+echo "### Two cores, one frame, Cortex-M4"
+echo
+echo "zl_frame_split's halves (issue 27, bench.c run_split), cfg.parts = 2, each part counted on this core: the"
+echo "critical path is serial + the larger zl_frame_prepare + the larger part's bands."
+echo
+echo "| scene | opt | one core (scanline) | serial: submit + split | prepare, core 0 | prepare, core 1 | bands, core 0 | bands, core 1 | critical path | critical / one core | split row | second core's work buffer (bytes) |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for s in bunny tris; do
+    for opt in O2 Os; do
+        tag=scanline-$opt
+        one=$(get $tag $s total)
+        crit=$(get $tag $s split_critical)
+        echo "| $s | -$opt | $(num "$one") | $(num "$(get $tag $s split_serial)") | $(num "$(get $tag $s split_prepare1)") | $(num "$(get $tag $s split_prepare2)") | $(num "$(get $tag $s split_first)") | $(num "$(get $tag $s split_second)") | $(num "$crit") | $(awk -v a="$crit" -v b="$one" 'BEGIN { printf "%.3f", a / b }') | $(get $tag $s split_row) | $(num "$(get $tag $s split_part_bytes)") |"
+    done
+done
+echo
 echo "### Flash and RAM (bytes; arm-none-eabi-size and the link map)"
 echo
 echo "| firmware | flash: core (.text+.rodata) | flash: meshes | flash: whole ELF | RAM: .data+.bss | stack high-water (deepest scene) |"

@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: MIT
+# Two cores equal one (CTest dual_an521, issue 27):
+#   cmake -DHOST=zline-golden-host -DTARGET=dual.elf -DEMULATOR=a|b|c -DDIR=dir -P compare-dual.cmake
+# Runs the host golden renderer (single-core scanline images host-SCENE-scanline.bin)
+# and the two-core firmware under QEMU mps2-an521 (an521-SCENE-scanline.bin),
+# then requires the bunny's and the triangle-rate scene's images byte for byte equal.
+file(GLOB old ${DIR}/host-*.bin ${DIR}/an521-*.bin)
+if(old)
+  file(REMOVE ${old})
+endif()
+execute_process(COMMAND ${HOST} WORKING_DIRECTORY ${DIR} RESULT_VARIABLE rc_host OUTPUT_QUIET)
+if(NOT rc_host EQUAL 0)
+  message(FATAL_ERROR "host golden renderer failed: ${rc_host}")
+endif()
+string(REPLACE "|" ";" emu "${EMULATOR}")
+execute_process(COMMAND ${emu} ${TARGET} WORKING_DIRECTORY ${DIR} RESULT_VARIABLE rc_target TIMEOUT 120)
+if(NOT rc_target EQUAL 0)
+  message(FATAL_ERROR "two-core firmware failed under QEMU: ${rc_target}")
+endif()
+foreach(scene bunny tris)
+  set(h ${DIR}/host-${scene}-scanline.bin)
+  set(t ${DIR}/an521-${scene}-scanline.bin)
+  if(NOT EXISTS ${h} OR NOT EXISTS ${t})
+    message(FATAL_ERROR "missing ${h} or ${t}")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${h} ${t} RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${t}: two cores differ from one core's ${h}")
+  endif()
+endforeach()
+message(STATUS "bunny and tris: two cores byte-identical to the host's single core")
