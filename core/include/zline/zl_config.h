@@ -92,6 +92,23 @@
 #endif
 
 /*
+ * ZL_FAST_SPANS: 1 gives the common textured and blended RGB565 spans their
+ * own loops (zl_span_tex.c and the texture loops of zl_rows_styled.c), 0
+ * sends them to the general loop: the same pixels (tests/test_fast_paths.c
+ * and the texture tests check both ways), less code, slower. Default 1
+ * where int has 32 bits or more, 0 where it has 16 (AVR: the loops are
+ * about 25 KB of ATmega2560 code at -Os, the part has 256 KB of flash).
+ */
+#ifndef ZL_FAST_SPANS
+#include <limits.h>
+#if INT_MAX > 32767
+#define ZL_FAST_SPANS 1
+#else
+#define ZL_FAST_SPANS 0
+#endif
+#endif
+
+/*
  * ZL_FEATURES: the optional features compiled in, one bit each (none can be
  * left out yet: 0). Part of ZL_ABI_KEY (zline.h), so an application and a
  * library built with different feature sets fail zl_init with ZL_ERR_ABI.

@@ -405,7 +405,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
     zrow = zrow ? zrow + x0 : NULL;
     if ((crow == NULL && ss->bpp != 0) || (zrow == NULL && (ss->zwrite || func != ZL_ALWAYS)))
         return; /* as in row_span */
-    if (tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_NEAREST && tex->format == ZL_TEXEL_RGB565 &&
+    if (ZL_FAST_SPANS && tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_NEAREST && tex->format == ZL_TEXEL_RGB565 &&
         is_pow2(tex->width) &&
         is_pow2(tex->height) && light == 255 && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
@@ -435,7 +435,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                         dQ);
         return;
     }
-    if (tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_BILINEAR && !persp && light == 255 &&
+    if (ZL_FAST_SPANS && tex != NULL && blend == ZL_BLEND_OFF && filter == ZL_FILTER_BILINEAR && !persp && light == 255 &&
         tex->format == ZL_TEXEL_RGB565 && is_pow2(tex->width) && is_pow2(tex->height) &&
         ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
         ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) && affine_fits(U, dU, n) &&
@@ -444,7 +444,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                             (int32_t)dV);
         return;
     }
-    if (blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
+    if (ZL_FAST_SPANS && blend != ZL_BLEND_OFF && !pg && !lg && ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && zrow != NULL &&
         ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL) &&
         (tex == NULL || (!persp && light == 255 && filter == ZL_FILTER_NEAREST && is_pow2(tex->width) && is_pow2(tex->height) &&
                          affine_fits(U, dU, n) && affine_fits(V, dV, n)))) {
