@@ -94,10 +94,12 @@
 /*
  * ZL_FAST_SPANS: 1 gives the common textured and blended RGB565 spans their
  * own loops (zl_span_tex.c and the texture loops of zl_rows_styled.c), 0
- * sends them to the general loop: the same pixels (tests/test_fast_paths.c
- * and the texture tests check both ways), less code, slower. Default 1
- * where int has 32 bits or more, 0 where it has 16 (AVR: the loops are
- * about 25 KB of ATmega2560 code at -Os, the part has 256 KB of flash).
+ * sends them to the general loop: the same pixels (the texture, blending
+ * and path tests run in both configurations: tests/CMakeLists.txt's
+ * *_small_code), less code, slower. Default 1 where int has 32 bits or
+ * more, 0 where it has 16 (AVR: the ATmega2560 firmware of CTest
+ * arduino_qemu_mega2560 went from 104 bytes over its 256 KB of flash to
+ * 220,376 bytes with them left out).
  */
 #ifndef ZL_FAST_SPANS
 #include <limits.h>
