@@ -27,12 +27,7 @@ for tool in avr-gcc avr-objcopy avr-objdump avr-size avr-nm qemu-system-avr; do
         { echo "$name: skipped, $tool not found (tools/setup-debian.sh installs it)"; exit 77; }
 done
 work=$(mktemp -d)
-qemu_pid=
-cleanup() {
-    [ -z "$qemu_pid" ] || kill "$qemu_pid" 2>/dev/null || true
-    [ -n "${KEEP:-}" ] || rm -rf "$work"; [ -z "${KEEP:-}" ] || echo "kept $work"
-}
-trap cleanup EXIT INT TERM
+trap 'rm -rf "$work"' EXIT INT TERM
 
 "$obj2c" --normalize --no-colors --name torus "$top/port/avr/torus.obj" "$work/torus_mesh.c" "$work/torus_mesh.h"
 # As the Arduino core compiles a sketch: -Os, LTO, section garbage
@@ -48,8 +43,6 @@ text=$1 data=$2 bss=$3
 echo "$name: flash $((text + data)) B; RAM before the stack $((data + bss)) B (.data $data + .bss $bss)"
 avr-nm -S --size-sort "$work/fw.elf" | awk -v n="$name" '
     $3 ~ /^[dDbB]$/ && ("0x" $2) + 0 >= 64 { printf "%s:   %6d B  %s\n", n, ("0x" $2) + 0, $4 }'
-avr-objcopy -O binary -j .data "$work/fw.elf" "$work/data.bin"
-data_addr=0x$(avr-objdump -h "$work/fw.elf" | awk '$2 == ".data" { print $4 }')
 mark=0x$(avr-nm "$work/fw.elf" | awk '$3 == "mark" { print $1 }')
 
 plugin=
@@ -59,23 +52,8 @@ else
     echo "$name: no instruction counts (the QEMU plugin does not build: $(head -n 1 "$work/plugin.log"))"
 fi
 # shellcheck disable=SC2086 # $plugin splits on spaces
-qemu-system-avr -M mega2560 -bios "$work/fw.elf" $plugin \
-    -device loader,file="$work/data.bin",addr="$data_addr",force-raw=on \
-    -display none -serial file:"$work/serial.txt" -monitor none 2>"$work/qemu.log" &
-qemu_pid=$!
-waited=0
-while ! grep -q '^done' "$work/serial.txt" 2>/dev/null; do
-    if [ "$waited" -ge "${AVR_TIMEOUT:-300}" ] || ! kill -0 "$qemu_pid" 2>/dev/null; then
-        tail -c 2000 "$work/serial.txt" 2>/dev/null || true
-        echo "$name: no 'done' from the firmware after $waited s"
-        exit 1
-    fi
-    sleep 1
-    waited=$((waited + 1))
-done
-kill "$qemu_pid" 2>/dev/null || true
-wait "$qemu_pid" 2>/dev/null || true
-qemu_pid=
+sh "$top/port/avr/qemu-avr.sh" "$name" "$work/fw.elf" "$work/serial.txt" "${AVR_TIMEOUT:-300}" $plugin
+waited=$(cat "$work/serial.txt.seconds")
 
 grep '^# ' "$work/serial.txt" | sed "s/^# /$name: ATmega2560 /"
 stack=$(sed -n 's/^# stack: \([0-9]*\) bytes.*/\1/p' "$work/serial.txt")

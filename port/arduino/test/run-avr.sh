@@ -23,12 +23,7 @@ for tool in avr-gcc avr-objcopy avr-objdump avr-size qemu-system-avr; do
         { echo "arduino_qemu_mega2560: skipped, $tool not found (tools/setup-debian.sh installs it)"; exit 77; }
 done
 work=$(mktemp -d)
-qemu_pid=
-cleanup() {
-    [ -z "$qemu_pid" ] || kill "$qemu_pid" 2>/dev/null || true
-    rm -rf "$work"
-}
-trap cleanup EXIT INT TERM
+trap 'rm -rf "$work"' EXIT INT TERM
 
 # SCENE_QEMU_DATA_PRELOAD: avr_scene.c works around two bugs of QEMU 7.2's
 # AVR emulation (ELPM above 64 KB, a skipped RET); see there.
@@ -41,28 +36,8 @@ avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c
 avr-size "$work/fw.elf" | awk 'NR == 2 {
     printf "arduino_qemu_mega2560: firmware flash %d B, RAM %d B (.data %d + .bss %d) before the stack\n",
         $1 + $2, $2 + $3, $2, $3 }'
-# .data's initial image goes straight into SRAM at its address (0x800000 is
-# where QEMU and the GNU tools put the AVR's data space).
-avr-objcopy -O binary -j .data "$work/fw.elf" "$work/data.bin"
-data_addr=0x$(avr-objdump -h "$work/fw.elf" | awk '$2 == ".data" { print $4 }')
-
-qemu-system-avr -M mega2560 -bios "$work/fw.elf" \
-    -device loader,file="$work/data.bin",addr="$data_addr",force-raw=on \
-    -display none -serial file:"$work/serial.txt" -monitor none 2>"$work/qemu.log" &
-qemu_pid=$!
-waited=0
-while ! grep -q '^done' "$work/serial.txt" 2>/dev/null; do
-    if [ "$waited" -ge "${AVR_TIMEOUT:-120}" ] || ! kill -0 "$qemu_pid" 2>/dev/null; then
-        cat "$work/serial.txt" 2>/dev/null || true
-        echo "arduino_qemu_mega2560: no 'done' from the firmware after $waited s"
-        exit 1
-    fi
-    sleep 1
-    waited=$((waited + 1))
-done
-kill "$qemu_pid" 2>/dev/null || true
-wait "$qemu_pid" 2>/dev/null || true
-qemu_pid=
+sh "$top/port/avr/qemu-avr.sh" arduino_qemu_mega2560 "$work/fw.elf" "$work/serial.txt" "${AVR_TIMEOUT:-120}"
+waited=$(cat "$work/serial.txt.seconds")
 
 grep '^# ' "$work/serial.txt" | sed 's/^# /arduino_qemu_mega2560: ATmega2560 /'
 grep -v '^# ' "$work/serial.txt" | grep -v '^done' >"$work/avr.txt"
