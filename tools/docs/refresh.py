@@ -4,7 +4,7 @@
 
     python3 tools/docs/refresh.py [--check] [--cortex-m BUILD_DIR] [--host HOST_BUILD_DIR]
                                   [--riscv BUILD_DIR] [--riscv-only] [--cortex-m0 BUILD_DIR]
-                                  [--slots BUILD_PREFIX] [--core-size WORK_DIR]
+                                  [--slots BUILD_PREFIX] [--core-size WORK_DIR] [--config-size WORK_DIR]
     python3 tools/docs/refresh.py --check-headline
 
 Runs port/cortex-m/bench/measure.sh and port/cortex-m/bench/profile.sh (KEY=total and
@@ -16,7 +16,9 @@ ZLINE_CPU=cortex-m0 build; without --cortex-m, that alone: the Cortex-M4 measure
 when --cortex-m names its build or no --cortex-m0 is given), with --slots also port/cortex-m/bench/slot-sweep.sh (five Cortex-M4
 builds, BUILD_PREFIX-N; the table is not part of --check, which would take minutes), with
 --core-size also tools/size/core-size.sh (the whole library's flash per CPU and float ABI, the
-table of docs/PORTING.md; about two minutes, not part of --check either), splits their output into sections ("### title"
+table of docs/PORTING.md; about two minutes, not part of --check either), with --config-size also
+tools/size/config-size.sh (README's core flash per configuration, issue 23; about three minutes, checked
+by CTest config_size_table instead of --check), splits their output into sections ("### title"
 plus the markdown table under it) and, in every document:
   * replaces the table under a heading "### title" or "#### title" with the table of the section of that
     title (profile headings match up to their " (" suffix, which names marks that move);
@@ -289,7 +291,7 @@ def m0_profiles(build):
 
 def main():
     build, host, riscv, cortex_m = "build/cortex-m4-bench", None, None, True
-    cortex_m0, cortex_m_named, slots, core_size = None, False, None, None
+    cortex_m0, cortex_m_named, slots, core_size, config_size = None, False, None, None, None
     args = sys.argv[1:]
     if args == ["--check-headline"]:
         sys.exit(check_headline())
@@ -297,7 +299,7 @@ def main():
     if args and args[0] == "--check":
         check, args = True, args[1:]
     while args and args[0] in ("--cortex-m", "--host", "--riscv", "--riscv-only", "--cortex-m0", "--slots",
-                               "--core-size"):
+                               "--core-size", "--config-size"):
         if args[0] == "--riscv-only":
             cortex_m, riscv = False, riscv or "build/rv32imac-bench"
             args = args[1:]
@@ -314,10 +316,12 @@ def main():
             slots = args[1]
         elif args[0] == "--core-size":
             core_size = args[1]
+        elif args[0] == "--config-size":
+            config_size = args[1]
         else:
             riscv = args[1]
         args = args[2:]
-    if (cortex_m0 or core_size) and not cortex_m_named:
+    if (cortex_m0 or core_size or config_size) and not cortex_m_named:
         cortex_m = False
     text = ""
     if cortex_m0:
@@ -335,6 +339,9 @@ def main():
         text += "\n" + run(["sh", "port/cortex-m/bench/slot-sweep.sh", slots])
     if core_size:
         text += "\n### Core size per CPU (tools/size/core-size.sh)\n\n" + run(["sh", "tools/size/core-size.sh", core_size])
+    if config_size:
+        text += ("\n### Core flash per configuration (tools/size/config-size.sh)\n\n" +
+                 run(["sh", "tools/size/config-size.sh", config_size]))
     if cortex_m:
         text += "\n" + run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total"})
         vc = run(["sh", "port/cortex-m/bench/profile.sh", build], {"KEY": "total_vcache"})

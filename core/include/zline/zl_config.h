@@ -111,11 +111,49 @@
 #endif
 
 /*
- * ZL_FEATURES: the optional features compiled in, one bit each (none can be
- * left out yet: 0). Part of ZL_ABI_KEY (zline.h), so an application and a
- * library built with different feature sets fail zl_init with ZL_ERR_ABI.
+ * Feature switches (issue 23): pay only for what you draw. Each is 1 (the
+ * default: compiled in) or 0 (compiled out: the code that draws it is
+ * unreachable, so the compiler and the linker's section garbage collection
+ * drop it; the API that would use it returns ZL_ERR_UNSUPPORTED).
+ *
+ *   ZL_FEATURE_TEXTURES  textured triangles and perspective-correct Gouraud
+ *                        (zl_style.texture, .persp_gouraud)
+ *   ZL_FEATURE_BLEND     alpha and additive blending (zl_style.blend)
+ *   ZL_FEATURE_LINES     lines and points (zl_draw_lines, zl_frame_add_lines),
+ *                        polygon modes LINE and POINT, antialiased lines
+ *   ZL_FEATURE_OUTLINES  outlines (zl_draw_outlines, zl_frame_add_outlines;
+ *                        zl_mesh_edges finds no edge)
+ *
+ * Off, a style that asks for the feature makes every draw and submission
+ * with it return ZL_ERR_UNSUPPORTED (zl_style_check). Flat and Gouraud
+ * triangles, every depth function, frame, band and scanline modes and the
+ * visibility methods (their own API, linked only when called) stay.
  */
-#define ZL_FEATURES 0u
+#ifndef ZL_FEATURE_TEXTURES
+#define ZL_FEATURE_TEXTURES 1
+#endif
+#ifndef ZL_FEATURE_BLEND
+#define ZL_FEATURE_BLEND 1
+#endif
+#ifndef ZL_FEATURE_LINES
+#define ZL_FEATURE_LINES 1
+#endif
+#ifndef ZL_FEATURE_OUTLINES
+#define ZL_FEATURE_OUTLINES 1
+#endif
+#if (ZL_FEATURE_TEXTURES != 0 && ZL_FEATURE_TEXTURES != 1) || (ZL_FEATURE_BLEND != 0 && ZL_FEATURE_BLEND != 1) || \
+    (ZL_FEATURE_LINES != 0 && ZL_FEATURE_LINES != 1) || (ZL_FEATURE_OUTLINES != 0 && ZL_FEATURE_OUTLINES != 1)
+#error "each ZL_FEATURE_* must be 0 or 1"
+#endif
+
+/*
+ * ZL_FEATURES: the feature set compiled in, one bit a switch above. Part of
+ * ZL_ABI_KEY (zline.h), so an application and a library built with
+ * different feature sets fail zl_init with ZL_ERR_ABI.
+ */
+#define ZL_FEATURES                                                                                       \
+    ((unsigned)ZL_FEATURE_TEXTURES | ((unsigned)ZL_FEATURE_BLEND << 1) | ((unsigned)ZL_FEATURE_LINES << 2) | \
+     ((unsigned)ZL_FEATURE_OUTLINES << 3))
 
 /*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library

@@ -76,6 +76,8 @@ zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
 
 zl_status zl_check_lines(const zl_lines *l)
 {
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h) */
+        return ZL_ERR_UNSUPPORTED;
     uint32_t i;
     if (l == NULL)
         return ZL_ERR_ARG;

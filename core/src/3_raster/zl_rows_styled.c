@@ -552,7 +552,8 @@ int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style 
                   uint8_t *color_row, uint16_t *depth_row)
 {
     int k;
-    if (tp == NULL || !zl_style_needs_planes(sty))
+    /* without textures and blending (zl_config.h) no style needs planes */
+    if (!(ZL_FEATURE_TEXTURES || ZL_FEATURE_BLEND) || tp == NULL || !zl_style_needs_planes(sty))
         return zl_tri_row(t, g, ss, color_row, depth_row);
     if (tp->persp) {
         /* a clipped triangle across the eye plane: its affine texture is

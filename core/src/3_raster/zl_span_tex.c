@@ -392,6 +392,8 @@ void zl_span_blend565(unsigned func, unsigned mode, int zwrite, const zl_texture
                               const unsigned *src, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z, uint32_t dz,
                               int32_t u32, int32_t du32, int32_t v32, int32_t dv32)
 {
+    if (!ZL_FEATURE_BLEND) /* compiled out (zl_config.h): unreachable, the code goes */
+        return;
     if (tex == NULL && n >= ZL_BLEND_TABLE_MIN) {
         blend_table_any(mode, alpha, src, func, zwrite, crow, zrow, n, z, dz);
         return;
@@ -469,6 +471,8 @@ static ZL_NOINLINE void bilinear_repeat_any(unsigned func, const zl_repeat_pow2 
 void zl_span_bilinear565(unsigned func, const zl_texture *tex, uint16_t *crow, uint16_t *zrow, int32_t n, uint32_t z,
                          uint32_t dz, int32_t u, int32_t du, int32_t v, int32_t dv)
 {
+    if (!ZL_FEATURE_TEXTURES) /* compiled out (zl_config.h): unreachable, the code goes */
+        return;
     zl_repeat_pow2 rp;
     if (repeat_pow2_of(tex, &rp)) {
         bilinear_repeat_any(func, &rp, crow, zrow, n, z, dz, (uint32_t)u, (uint32_t)du, (uint32_t)v, (uint32_t)dv);

@@ -61,6 +61,10 @@ zl_status zl_style_check(const zl_style *s)
         return ZL_ERR_ARG;
     if (s->tex_every > 1 && (s->tex_every > 64 || (s->tex_every & (s->tex_every - 1u)) != 0))
         return ZL_ERR_RANGE;
+    if ((!ZL_FEATURE_TEXTURES && (s->texture != NULL || s->persp_gouraud)) ||
+        (!ZL_FEATURE_BLEND && s->blend != ZL_BLEND_OFF) ||
+        (!ZL_FEATURE_LINES && (s->polygon_front != ZL_POLY_FILL || s->polygon_back != ZL_POLY_FILL)))
+        return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     if (s->texture != NULL) {
         const zl_texture *t = s->texture;
         if (t->texels == NULL || s->texcoords == NULL || t->wrap_s > ZL_WRAP_CLAMP || t->wrap_t > ZL_WRAP_CLAMP ||
@@ -138,6 +142,8 @@ static int64_t offset_depth(uint32_t z, int64_t offset_q20)
 int zl_line_setup(zl_active *t, const zl_segment *seg, unsigned algo, int64_t offset_q20, uint16_t width,
                   uint16_t height)
 {
+    if (!ZL_FEATURE_LINES) /* unreachable then (zl_style_check, zl_check_lines): the code goes */
+        return 0;
     int32_t xa = pixel_of(seg->a.x), ya = pixel_of(seg->a.y), xb = pixel_of(seg->b.x), yb = pixel_of(seg->b.y);
     int64_t za = offset_depth(seg->a.z, offset_q20), zb = offset_depth(seg->b.z, offset_q20);
     int64_t dxab = (int64_t)xb - xa, dyab = (int64_t)yb - ya;
@@ -230,6 +236,8 @@ int zl_line_setup(zl_active *t, const zl_segment *seg, unsigned algo, int64_t of
 
 int zl_line_setup_aa(zl_active *t, const zl_segment *seg, int64_t offset_q20, uint16_t width, uint16_t height)
 {
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): unreachable, the code goes */
+        return 0;
     int32_t xa = pixel_of(seg->a.x), ya = pixel_of(seg->a.y), xb = pixel_of(seg->b.x), yb = pixel_of(seg->b.y);
     int64_t za = offset_depth(seg->a.z, offset_q20), zb = offset_depth(seg->b.z, offset_q20);
     int64_t dxab = (int64_t)xb - xa, dyab = (int64_t)yb - ya;
@@ -295,6 +303,8 @@ int zl_line_setup_aa(zl_active *t, const zl_segment *seg, int64_t offset_q20, ui
 int zl_point_setup(zl_active *t, const zl_lvert *p, zl_rgb rgb, unsigned size, int64_t offset_q20, uint16_t width,
                    uint16_t height)
 {
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): unreachable, the code goes */
+        return 0;
     /* Centres in (x - N/2, x + N/2]: the first index is
      * floor((x - N/2 - 1/2) / 1) + 1, the last floor(x + N/2 - 1/2). */
     int64_t half = (int64_t)size * ZL_SUB_HALF;
@@ -331,6 +341,8 @@ static int64_t units_offset(const zl_style *sty)
 int zl_lines_record(const zl_source *s, const zl_lines *l, const zl_style *sty, const zl_state *st, uint32_t k,
                     zl_active *out)
 {
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): unreachable, the code goes */
+        return 0;
     zl_rgb rgb = st->color;
     uint32_t ia, ib;
     if (l->colors != NULL) {
@@ -458,7 +470,7 @@ ZL_NOINLINE void zl_tri_orig_piece(const zl_source *s, const zl_style *sty, uint
                                    zl_texplanes *tp)
 {
     zl_attr z, col[3];
-    int planes = tp != NULL && zl_style_needs_planes(sty);
+    int planes = (ZL_FEATURE_TEXTURES || ZL_FEATURE_BLEND) && tp != NULL && zl_style_needs_planes(sty);
     int gouraud = g != NULL && s->state->shading == ZL_SHADE_GOURAUD;
     int persp_colour = gouraud && sty != NULL && sty->persp_gouraud;
     int got;

@@ -516,6 +516,8 @@ static int line_run565(zl_active *t, int32_t width, uint16_t *crow, uint16_t *zr
 
 int zl_prim_row(zl_active *t, const zl_span_state *ss, uint8_t *color_row, uint16_t *depth_row)
 {
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): unreachable, the code goes */
+        return 0;
     uint8_t pix[3] = {0, 0, 0};
     if (t->kind == ZL_KIND_LINE_AA)
         return aa_row(t, ss, color_row, depth_row);

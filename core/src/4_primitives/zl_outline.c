@@ -43,6 +43,8 @@ static void sift_down(zl_mesh_edge *e, uint32_t root, uint32_t n)
 
 uint32_t zl_mesh_edges(const zl_mesh *m, zl_mesh_edge *edges, uint32_t capacity)
 {
+    if (!ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h) */
+        return 0;
     uint32_t n, i, out, t;
     if (m == NULL || edges == NULL || zl_check_mesh(m, 0) != ZL_OK)
         return 0;
@@ -189,6 +191,8 @@ int zl_outline_selected(const zl_source *s, const zl_mesh *mesh, const zl_outlin
 int zl_outline_record(const zl_source *s, const zl_mesh *mesh, const zl_outline *o, const zl_style *sty,
                       uint32_t k, zl_active *out)
 {
+    if (!ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h) */
+        return 0;
     const zl_mesh_edge *e = &o->edges[k];
     zl_segment seg;
     if (!zl_outline_selected(s, mesh, o, e))
@@ -205,6 +209,8 @@ int zl_outline_record(const zl_source *s, const zl_mesh *mesh, const zl_outline 
 
 zl_status zl_check_outline(const zl_mesh *mesh, const zl_outline *o)
 {
+    if (!ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h) */
+        return ZL_ERR_UNSUPPORTED;
     uint32_t i;
     if (o == NULL || (o->edge_count > 0 && o->edges == NULL))
         return ZL_ERR_ARG;

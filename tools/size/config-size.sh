@@ -1,0 +1,87 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# Flash of the core in a firmware that draws, per configuration (issue 23):
+# the core's .text + .rodata that a firmware keeps after section garbage
+# collection when it calls the drawing API (tools/size/size_probe.c: frame
+# mode, scanline mode, lines, outlines, styles; a feature switched off
+# answers ZL_ERR_UNSUPPORTED there, and its code goes). Every core/src file
+# and the probe are compiled with -ffunction-sections -fdata-sections, then
+# partially linked (ld -r --gc-sections, entry zl_size_probe: no C library
+# needed); the probe's own sections are subtracted. memset/memcpy and the
+# compiler's helpers (libgcc) are not counted.
+#
+# Configurations: all-on (zl_config.h's defaults) and minimal (every
+# ZL_FEATURE_* 0: RGB565 or any format, flat and Gouraud, every depth
+# function, frame and scanline modes). Targets: Cortex-M0+, Cortex-M4
+# (arm-none-eabi-gcc), rv32imc (riscv64-unknown-elf-gcc with picolibc's
+# headers), ATmega2560 (avr-gcc), each at -Os and -O2.
+#
+#   sh tools/size/config-size.sh [work-dir]    -> a Markdown table on stdout
+# Exit 2 when a compiler is missing (tools/setup-debian.sh installs them).
+set -eu
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=${1:-$root/build/config-size}
+for tool in arm-none-eabi-gcc riscv64-unknown-elf-gcc avr-gcc; do
+    command -v $tool >/dev/null || { echo "config-size.sh: $tool not found" >&2; exit 2; }
+done
+srcs=$(find "$root/core/src" -name '*.c' | sort)
+minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0"
+
+# flash PREFIX LD-EMULATION FLAGS... : .text + .rodata bytes the probe keeps of
+# the core (LD-EMULATION: ld's -m, or - for its default)
+flash() {
+    prefix=$1; emulation=$2; shift 2
+    dir=$work/obj
+    rm -rf "$dir" && mkdir -p "$dir/core"
+    (cd "$dir/core" && "${prefix}gcc" "$@" -std=c99 -ffunction-sections -fdata-sections -I"$root/core/include" -c $srcs)
+    "${prefix}gcc" "$@" -std=c99 -ffunction-sections -fdata-sections -I"$root/core/include" \
+        -c "$root/tools/size/size_probe.c" -o "$dir/probe.o"
+    if [ "$prefix" = avr- ]; then # avr-ld has no relocatable link: a full one, the core's share from its map
+        avr-gcc "$@" -nostartfiles -Wl,--gc-sections -Wl,-e,zl_size_probe -Wl,-Map,"$dir/fw.map" \
+            -o "$dir/fw.elf" "$dir/probe.o" "$dir"/core/*.o
+        map_core_bytes "$dir/fw.map"
+        return
+    fi
+    set --
+    [ "$emulation" = - ] || set -- -m "$emulation"
+    "${prefix}ld" "$@" -r --gc-sections -e zl_size_probe -o "$dir/kept.o" "$dir/probe.o" "$dir"/core/*.o
+    total=$(code_bytes "$prefix" "$dir/kept.o")
+    own=$(code_bytes "$prefix" "$dir/probe.o")
+    echo $((total - own))
+}
+# map_core_bytes MAP: .text* and .rodata* input sections of core/ objects a
+# linked image kept (GNU ld's map: name, address, size, file; a long name
+# puts the rest on the next line)
+map_core_bytes() {
+    awk '
+        function hex(h,   i, v) { v = 0; h = tolower(substr(h, 3)); for (i = 1; i <= length(h); i++) v = v * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1; return v }
+        /^Linker script and memory map/ { on = 1 }
+        on && /^ \.(text|rodata)/ { sec = 1; if (NF >= 4) { size = $3; file = $4 } else next }
+        on && sec && NF == 3 && $1 ~ /^0x/ { size = $2; file = $3 }
+        on && sec && file != "" { if (file ~ /\/core\/[^\/]*\.o$/) core += hex(size); sec = 0; file = "" }
+        END { print core + 0 }' "$1"
+}
+# code_bytes PREFIX OBJECT: sizes of its .text* and .rodata* sections
+code_bytes() {
+    "${1}objdump" -h "$2" | awk '
+        function hex(h,   i, v) { v = 0; h = tolower(h); for (i = 1; i <= length(h); i++) v = v * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1; return v }
+        $2 ~ /^\.(text|rodata)/ { s += hex($3) } END { print s + 0 }'
+}
+kb() { awk -v b="$1" 'BEGIN { printf "%.1f", b / 1024 }'; }
+
+echo "| configuration | target | -Os (bytes) | -Os (KB) | -O2 (bytes) | -O2 (KB) |"
+echo "|---|---|---:|---:|---:|---:|"
+while read -r name prefix emulation flags; do
+    for config in all-on minimal; do
+        extra=
+        [ "$config" = minimal ] && extra=$minimal
+        os=$(flash "$prefix" "$emulation" $flags -Os $extra)
+        o2=$(flash "$prefix" "$emulation" $flags -O2 $extra)
+        echo "| $config | $name | $os | $(kb "$os") | $o2 | $(kb "$o2") |"
+    done
+done <<EOF2
+Cortex-M0+ arm-none-eabi- - -mcpu=cortex-m0plus -mthumb
+Cortex-M4 arm-none-eabi- - -mcpu=cortex-m4 -mthumb
+rv32imc riscv64-unknown-elf- elf32lriscv -march=rv32imc_zicsr -mabi=ilp32 --specs=picolibc.specs
+ATmega2560 avr- - -mmcu=atmega2560
+EOF2
