@@ -32,7 +32,10 @@ trap 'rm -rf "$work"' EXIT INT TERM
 "$obj2c" --normalize --no-colors --name torus "$top/port/avr/torus.obj" "$work/torus_mesh.c" "$work/torus_mesh.h"
 # As the Arduino core compiles a sketch: -Os, LTO, section garbage
 # collection; SCENE_QEMU_DATA_PRELOAD: avr_board.h's QEMU 7.2 work-arounds.
+# The minimal configuration (zl_config.h's feature switches, issue 23): flat
+# and Gouraud triangles only, what the scene draws.
 avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w \
+    -DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 \
     -ffunction-sections -fdata-sections -flto \
     -I"$top/core/include" -I"$top/port/avr" -I"$work" \
     "$top/port/avr/avr_model.c" "$top/port/avr/model_scene.c" "$work/torus_mesh.c" \
