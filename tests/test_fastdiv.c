@@ -249,7 +249,7 @@ static int ref_inside(const int32_t *c, int64_t wd, int64_t ht)
 
 static zl_cached_vertex ref_cache(const zl_fixed *m, const zl_fixed *p, int64_t wd, int64_t ht)
 {
-    zl_cached_vertex r = {ZL_CACHE_INVALID, 0, 0};
+    zl_cached_vertex r = {ZL_CACHE_INVALID, 0, 0, 0, 0};
     int32_t c[4];
     int64_t x, y, q, rem;
     if (!ref_transform(m, p, c))

@@ -49,9 +49,9 @@
 /*
  * ZL_DRAW_CACHE_SLOTS: entries of zl_draw_mesh's own post-transform vertex
  * cache, used when the caller gives no vertex cache (zl_context.vertex_cache
- * NULL or too small). Direct-mapped by vertex index; each entry costs 10
- * bytes of zl_context (an 8-byte window vertex and a 2-byte tag), plus 144
- * bytes for the draw's transform set-up: the default 1024 is 10384 bytes
+ * NULL or too small). Direct-mapped by vertex index; each entry costs 14
+ * bytes of zl_context (a 12-byte window vertex and a 2-byte tag), plus 144
+ * bytes for the draw's transform set-up: the default 1024 is 14480 bytes
  * (zl_context is frame mode's, next to a full colour and depth target). A
  * power of two from 2 to 32768, or 0 for no cache (then each triangle
  * transforms and clips its own three vertices: slower, the same pixels). Measured on the bunny (docs/MEASUREMENTS.md, Cortex-M4):

@@ -720,18 +720,18 @@ typedef struct {
     size_t vertex_cache_bytes;
 #if ZL_DRAW_CACHE_SLOTS > 0
     /* Without that cache, zl_draw_mesh keeps the window vertices of recent
-     * triangles here (ZL_DRAW_CACHE_SLOTS in zl_config.h: 10 bytes a slot,
-     * 10240 bytes by default, plus 144 for the transform set-up: 10384
+     * triangles here (ZL_DRAW_CACHE_SLOTS in zl_config.h: 14 bytes a slot,
+     * 14336 bytes by default, plus 144 for the transform set-up: 14480
      * bytes; the same pixels either way). Library scratch,
      * rewritten by every draw: do not touch. */
     int64_t draw_setup[18]; /* the draw's transform set-up (off the stack) */
-    uint32_t draw_cache[2 * ZL_DRAW_CACHE_SLOTS];
+    uint32_t draw_cache[3 * ZL_DRAW_CACHE_SLOTS];
     uint16_t draw_cache_tag[ZL_DRAW_CACHE_SLOTS];
 #endif
 } zl_context;
 
 /* Bytes of vertex cache for n vertices (scanline mode uses the same entries). */
-#define ZL_VERTEX_CACHE_BYTES(n) ((size_t)(n) * 8u)
+#define ZL_VERTEX_CACHE_BYTES(n) ((size_t)(n) * 12u)
 
 /* Check the target and set the default state and style. */
 zl_status zl_init(zl_context *ctx, const zl_target *target);

@@ -73,6 +73,23 @@ static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cach
     return ax;
 }
 
+/* zl_depth_plane_exact of three sorted cached vertices, anchored at column
+ * ax of v[0]'s row. */
+static int cached_depth_plane(zl_attr *z, uint32_t *zlo, uint32_t *zhi, const zl_cached_vertex *const *v, int32_t ax,
+                              int32_t first)
+{
+    zl_fine_vert f[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        f[k].x = v[k]->x;
+        f[k].y = v[k]->y;
+        f[k].fx = v[k]->fx;
+        f[k].fy = v[k]->fy;
+        f[k].z = v[k]->z;
+    }
+    return zl_depth_plane_exact(z, zlo, zhi, f, ax, zl_floor_shift32(v[0]->y, ZL_SUB_BITS), first);
+}
+
 /* zl_tri_setup_flat's triangle by the general setup (zl_tri_classify and
  * zl_tri_setup_rows on window vertices), for numbers beyond 32 bits. Out of
  * line, so the common case does not carry its frame. */
@@ -80,19 +97,22 @@ static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *
                                           uint16_t width, uint16_t height)
 {
     zl_wvert w[3];
+    int16_t res[6];
     int32_t first, end;
     unsigned k;
     for (k = 0; k < 3; k++) {
         w[k].x = c[k]->x;
         w[k].y = c[k]->y;
         w[k].z = c[k]->z;
+        res[2 * k] = c[k]->fx;
+        res[2 * k + 1] = c[k]->fy;
         w[k].r = 0; /* vertex colours only matter to Gouraud shading */
         w[k].g = 0;
         w[k].b = 0;
     }
     if (!zl_tri_classify(&w[0], &w[1], &w[2], st, width, height, &first, &end))
         return 0;
-    zl_tri_setup_rows(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, st, first, end);
+    zl_tri_setup_rows_res(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, res, st, first, end);
     return 1;
 }
 
@@ -105,7 +125,7 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
                          const zl_cached_vertex *c, uint16_t width, uint16_t height)
 {
     const zl_cached_vertex *v[3], *v0, *v1, *v2;
-    int32_t first, end, mid, ax, d1, d2;
+    int32_t first, end, mid, ax;
     int64_t cross;
     small_frame f;
     zl_edge upper;
@@ -123,11 +143,8 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
     f.dx2 = v2->x - v0->x;
     f.dy2 = v2->y - v0->y;
     cross = (int64_t)f.dx1 * f.dy2 - (int64_t)f.dx2 * f.dy1;
-    if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
-        !depth_diff32(v2->z, v0->z, &d2))
-        return -1;
-    ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
-    if (!plane_small(&t->z, &f, v0->z, d1, d2))
+    ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
+    if (!cached_depth_plane(&t->z, &t->zlo, &t->zhi, v, ax, first))
         return -1;
     t->kind = ZL_KIND_TRI;
     t->row = (int16_t)first;
@@ -147,10 +164,6 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
         t->left = upper;
     t->ax = ax;
     t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
-    t->zlo = v0->z < v1->z ? v0->z : v1->z;
-    t->zlo = v2->z < t->zlo ? v2->z : t->zlo;
-    t->zhi = v0->z > v1->z ? v0->z : v1->z;
-    t->zhi = v2->z > t->zhi ? v2->z : t->zhi;
     return 1;
 }
 
@@ -275,7 +288,7 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
     ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
-    if (!plane_small(&z, &f, v0->z, d1, d2))
+    if (!cached_depth_plane(&z, &zlo, &zhi, v, ax, first) || zhi - zlo >= (1u << 25))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
     tt->ax = ax;

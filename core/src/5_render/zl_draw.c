@@ -6,8 +6,8 @@
 #include "../1_base/zl_internal.h"
 #include "../3_raster/zl_span.h"
 
-/* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
-typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
+/* ZL_VERTEX_CACHE_BYTES promises 12 bytes per cached vertex (and draw_cache 3 words a slot). */
+typedef char zl_cache_entry_is_12_bytes[(sizeof(zl_cached_vertex) == 12) ? 1 : -1];
 #if ZL_DRAW_CACHE_SLOTS > 0
 /* zl_context.draw_setup holds a zl_vx (8-byte aligned: int64_t). */
 typedef char zl_draw_setup_fits[(sizeof(zl_vx) <= sizeof(((zl_context *)0)->draw_setup)) ? 1 : -1];
