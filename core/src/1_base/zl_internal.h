@@ -35,6 +35,11 @@ typedef struct {
  * +-1/2 subpixel plus the rounding of the clip coordinates, saturated to
  * int16). */
 #define ZL_FINE_BITS 12
+/* fx of a vertex drawn without the exact depth mapping (state near_z, far_z
+ * 0, or pixel space): its depth plane is solved through the snapped
+ * vertices, as the mapping z_clip / w_clip is biased by its Q16.16 matrix
+ * anyway, and the draw pays for no residual. */
+#define ZL_FINE_NONE INT16_MIN
 
 /* Clip-space vertex carried through clipping. */
 typedef struct {

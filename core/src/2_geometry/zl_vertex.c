@@ -125,16 +125,11 @@ static int64_t transform_sum(const zl_mat4 *m, int r, const zl_fixed *p)
 void zl_vertex_residuals(const zl_source *s, uint16_t idx, const zl_wvert *w, int16_t *fx, int16_t *fy)
 {
     const zl_fixed *p = &s->mesh->positions[idx * 3u];
-    if (s->mvp != NULL) {
+    *fx = *fy = ZL_FINE_NONE;
+    if (s->mvp != NULL && s->state != NULL && s->state->far_z != 0) { /* the exact mapping only */
         int64_t ws = transform_sum(s->mvp, 3, p), xs = transform_sum(s->mvp, 0, p), ys = transform_sum(s->mvp, 1, p);
         *fx = fine_residual(xs, ws, s->width * (uint32_t)(ZL_SUB_ONE / 2), xs < 0, w->x);
         *fy = fine_residual(ys, ws, s->height * (uint32_t)(ZL_SUB_ONE / 2), ys > 0, w->y);
-    } else {
-        /* Q16.16 pixels are 2^-12 subpixel units: the residual rounded to ZL_FINE_BITS */
-        *fx = (int16_t)zl_floor_shift32(p[0] - w->x * (1 << 12) + ((1 << 12) >> (ZL_FINE_BITS + 1)),
-                                        12 - ZL_FINE_BITS);
-        *fy = (int16_t)zl_floor_shift32(p[1] - w->y * (1 << 12) + ((1 << 12) >> (ZL_FINE_BITS + 1)),
-                                        12 - ZL_FINE_BITS);
     }
 }
 
@@ -397,7 +392,14 @@ static ZL_ALWAYS_INLINE int64_t vx_sum(const vx_setup *vs, int r, const zl_fixed
  * vertex, and the transform's registers are free by then. */
 static ZL_NOINLINE void vx_residuals(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c)
 {
-    int64_t w = vx_sum(vs, 3, p), x = vx_sum(vs, 0, p), y = vx_sum(vs, 1, p);
+    int64_t w, x, y;
+    c->fx = ZL_FINE_NONE;
+    c->fy = ZL_FINE_NONE;
+    if (vs->exact == NULL)
+        return; /* ZL_FINE_NONE: the snapped plane */
+    w = vx_sum(vs, 3, p);
+    x = vx_sum(vs, 0, p);
+    y = vx_sum(vs, 1, p);
     c->fx = fine_residual(x, w, vs->hx, x < 0, c->x);
     c->fy = fine_residual(y, w, vs->hy, y > 0, c->y);
 }
@@ -585,7 +587,10 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
         return 0;
     c->x = (int16_t)wx;
     c->y = (int16_t)(y > 0 ? (int32_t)vs->hy - (int32_t)q : (int32_t)(vs->hy + q));
-    vx_residuals(vs, p, c);
+    if (exact)
+        vx_residuals(vs, p, c);
+    else
+        c->fx = c->fy = ZL_FINE_NONE;
     /* the exact mapping from w's sum without bias[3]'s 2^15 of rounding */
     c->z = exact ? depth_of_wsum(vs->exact, wsum - 32768) : depth_q16((uint32_t)z, (uint32_t)w);
     return 1;

@@ -144,18 +144,20 @@ static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t 
 
 /* ------------------------------------ the depth plane of the unsnapped triangle */
 
-/* Bit length of v (0 for 0). */
-static unsigned bits64(uint64_t v)
+/* Bit length of v (0 for 0): CLZ where the compiler has it. */
+static ZL_ALWAYS_INLINE unsigned bits64(uint64_t v)
 {
-    unsigned n = 0;
-    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, w = hi != 0 ? hi : lo;
-    if (hi != 0)
-        n = 32;
+    uint32_t hi = (uint32_t)(v >> 32), w = hi != 0 ? hi : (uint32_t)v;
+    unsigned n = hi != 0 ? 32u : 0u;
+#if defined(__GNUC__) && __SIZEOF_INT__ >= 4 /* __builtin_clz counts in an unsigned int */
+    return w == 0 ? 0u : n + 32u - (unsigned)__builtin_clz(w);
+#else
     while (w != 0) {
         w >>= 1;
         n++;
     }
     return n;
+#endif
 }
 
 /*
@@ -315,6 +317,8 @@ static int poly_residuals(const zl_poly *poly, const zl_wvert *a, const zl_wvert
     for (k = 0; k < 3; k++) {
         unsigned i = v[k] == &poly->v[0] ? 0u : (v[k] == &poly->v[1] ? 1u : (v[k] == &poly->v[2] ? 2u : 3u));
         if (i > 2u)
+            return 0;
+        if (poly->fx[i] == ZL_FINE_NONE)
             return 0;
         res[2 * k] = poly->fx[i];
         res[2 * k + 1] = poly->fy[i];

@@ -100,6 +100,7 @@ static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *
     int16_t res[6];
     int32_t first, end;
     unsigned k;
+    int exact;
     for (k = 0; k < 3; k++) {
         w[k].x = c[k]->x;
         w[k].y = c[k]->y;
@@ -110,9 +111,10 @@ static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *
         w[k].g = 0;
         w[k].b = 0;
     }
+    exact = c[0]->fx != ZL_FINE_NONE;
     if (!zl_tri_classify(&w[0], &w[1], &w[2], st, width, height, &first, &end))
         return 0;
-    zl_tri_setup_rows_res(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, res, st, first, end);
+    zl_tri_setup_rows_res(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, exact ? res : NULL, st, first, end);
     return 1;
 }
 
@@ -143,9 +145,23 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
     f.dx2 = v2->x - v0->x;
     f.dy2 = v2->y - v0->y;
     cross = (int64_t)f.dx1 * f.dy2 - (int64_t)f.dx2 * f.dy1;
-    ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
-    if (!cached_depth_plane(&t->z, &t->zlo, &t->zhi, v, ax, first))
-        return -1;
+    if (v0->fx == ZL_FINE_NONE) { /* no exact mapping: the plane through the snapped vertices */
+        int32_t d1, d2;
+        if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
+            !depth_diff32(v2->z, v0->z, &d2))
+            return -1;
+        ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
+        if (!plane_small(&t->z, &f, v0->z, d1, d2))
+            return -1;
+        t->zlo = v0->z < v1->z ? v0->z : v1->z;
+        t->zlo = v2->z < t->zlo ? v2->z : t->zlo;
+        t->zhi = v0->z > v1->z ? v0->z : v1->z;
+        t->zhi = v2->z > t->zhi ? v2->z : t->zhi;
+    } else {
+        ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
+        if (!cached_depth_plane(&t->z, &t->zlo, &t->zhi, v, ax, first))
+            return -1;
+    }
     t->kind = ZL_KIND_TRI;
     t->row = (int16_t)first;
     t->mid = (int16_t)mid;
@@ -288,7 +304,8 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
     ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
-    if (!cached_depth_plane(&z, &zlo, &zhi, v, ax, first) || zhi - zlo >= (1u << 25))
+    if (v0->fx == ZL_FINE_NONE ? !plane_small(&z, &f, v0->z, d1, d2)
+                               : !cached_depth_plane(&z, &zlo, &zhi, v, ax, first) || zhi - zlo >= (1u << 25))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
     tt->ax = ax;

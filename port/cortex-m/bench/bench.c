@@ -120,7 +120,7 @@ static int check_target(const char *scene_name, uint32_t total)
 }
 
 /* Vertex cache for the cached frame-mode variant: up to 8192 vertices. */
-static uint32_t vcache_buf[2 * 8192];
+static uint32_t vcache_buf[3 * 8192]; /* ZL_VERTEX_CACHE_BYTES: 12 bytes a vertex */
 
 /* ------------------------------------------------------------ frame mode */
 
