@@ -74,8 +74,10 @@ static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cach
 }
 
 /* zl_depth_plane_exact of three sorted cached vertices, anchored at column
- * ax of v[0]'s row. */
-static int cached_depth_plane(zl_attr *z, uint32_t *zlo, uint32_t *zhi, const zl_cached_vertex *const *v, int32_t ax,
+ * ax of v[0]'s row. Out of line: the set-ups without the exact mapping do
+ * not carry its frame (+19 instructions a triangle on the Cortex-M4 bunny
+ * in line). */
+static ZL_NOINLINE int cached_depth_plane(zl_attr *z, uint32_t *zlo, uint32_t *zhi, const zl_cached_vertex *const *v, int32_t ax,
                               int32_t first)
 {
     zl_fine_vert f[3];
@@ -270,7 +272,7 @@ static ZL_ALWAYS_INLINE void frame_out(small_frame *out, const small_frame *f)
  * local: through a pointer GCC -Os keeps it in memory (+2 % on the flat
  * bunny, +3 % on tris, Cortex-M4 and rv32). */
 static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v, uint16_t height,
-                                         small_frame *fout)
+                                         small_frame *fout, int exact)
 {
     const zl_cached_vertex *v0, *v1, *v2;
     int32_t first, end, mid, ax, d1, d2, cross;
@@ -304,8 +306,8 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
     ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
-    if (v0->fx == ZL_FINE_NONE ? !plane_small(&z, &f, v0->z, d1, d2)
-                               : !cached_depth_plane(&z, &zlo, &zhi, v, ax, first) || zhi - zlo >= (1u << 25))
+    if (!exact ? !plane_small(&z, &f, v0->z, d1, d2)
+               : !cached_depth_plane(&z, &zlo, &zhi, v, ax, first) || zhi - zlo >= (1u << 25))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
     tt->ax = ax;
@@ -329,7 +331,10 @@ static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, c
     v[0] = a;
     v[1] = b;
     v[2] = c;
-    return tiny_setup_v(tt, v, height, NULL);
+    /* one instance a depth mapping: the snapped plane's is the set-up of before issue 22 */
+    if (a->fx == ZL_FINE_NONE)
+        return tiny_setup_v(tt, v, height, NULL, 0);
+    return tiny_setup_v(tt, v, height, NULL, 1);
 }
 
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
@@ -439,7 +444,7 @@ static ZL_ALWAYS_INLINE int tiny_gouraud_setup(zl_tiny *tt, zl_tiny_colour *tc, 
     /* read only when set (|cross| >= 2^16), which GCC cannot follow here */
     f.inv.d = f.inv.v = 0;
     f.inv.shift = 0;
-    set = tiny_setup_v(tt, s, height, &f);
+    set = tiny_setup_v(tt, s, height, &f, s[0]->fx != ZL_FINE_NONE);
     if (set <= 0)
         return set;
     for (k = 0; k < 3; k++) /* the colours in the sorted order */
@@ -512,7 +517,8 @@ int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cache
 {
     zl_tiny tt; /* in line: its fields go straight to the record */
     int set;
-    tt.low.n = tt.low.inc = tt.low.d = 0; /* set below when it has rows: GCC cannot tell */
+    tt.low.n = tt.low.inc = tt.low.d = 0; /* set below when they have rows: GCC cannot tell */
+    tt.up.n = tt.up.inc = tt.up.d = 0;
     set = tiny_setup(&tt, a, b, c, width, height);
     if (set <= 0)
         return set;
