@@ -190,7 +190,7 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
                     continue;
                 if (poly.clipped)
                     wide_depths(r, &src, t);
-                else
+                else if (poly.n == 3 && poly.fx[0] != ZL_FINE_NONE) /* the exact mapping's plane */
                     exact_depths(r, &poly, &poly.v[0], &poly.v[k], &poly.v[k + 1]);
                 r->id = v->visible[b];
                 r->rgb[0] = poly.flat.r;
