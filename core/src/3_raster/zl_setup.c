@@ -161,11 +161,11 @@ static ZL_ALWAYS_INLINE unsigned bits64(uint64_t v)
 }
 
 /*
- * round(g 2^k / c) for the divisor c = c32 2^-k... (see depth_grad): the
- * numerator shifted left as far as 2^62 allows (exact), divided by the
- * reciprocal of c32 (>= 2^31, so any numerator below 2^63 qualifies), and
- * the rest of the shift applied to the quotient (relative error below
- * 2^-30 then); saturated at ZL_GRAD_LIMIT.
+ * round(g 2^k / c32) (zl_depth_plane_exact's gradients: c = c32 2^s, k
+ * holds the -s): the numerator shifted left as far as 2^62 allows (exact),
+ * divided by the reciprocal of c32 (>= 2^31, so any numerator below 2^63
+ * qualifies), and the rest of the shift applied to the quotient (relative
+ * error below 2^-30 then); saturated at ZL_GRAD_LIMIT.
  */
 static int64_t scaled_quotient(int64_t g, const zl_div_inv *inv, uint32_t c32, int k)
 {
