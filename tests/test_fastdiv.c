@@ -249,9 +249,11 @@ static int ref_inside(const int32_t *c, int64_t wd, int64_t ht)
 
 static zl_cached_vertex ref_cache(const zl_fixed *m, const zl_fixed *p, int64_t wd, int64_t ht)
 {
-    zl_cached_vertex r = {ZL_CACHE_INVALID, 0, 0};
+    zl_cached_vertex r;
     int32_t c[4];
     int64_t x, y, q, rem;
+    memset(&r, 0, sizeof r);
+    r.x = ZL_CACHE_INVALID;
     if (!ref_transform(m, p, c))
         return r;
     r.x = ZL_CACHE_COMPLEX;

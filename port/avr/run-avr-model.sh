@@ -33,9 +33,10 @@ trap 'rm -rf "$work"' EXIT INT TERM
 # As the Arduino core compiles a sketch: -Os, LTO, section garbage
 # collection; SCENE_QEMU_DATA_PRELOAD: avr_board.h's QEMU 7.2 work-arounds.
 # The minimal configuration (zl_config.h's feature switches, issue 23): flat
-# and Gouraud triangles only, what the scene draws.
+# and Gouraud triangles, depth through the snapped vertices (its 8-byte cached
+# vertices): what the scene draws, which uses the default depth mapping.
 avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w \
-    -DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 \
+    -DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0 \
     -ffunction-sections -fdata-sections -flto \
     -I"$top/core/include" -I"$top/port/avr" -I"$work" \
     "$top/port/avr/avr_model.c" "$top/port/avr/model_scene.c" "$work/torus_mesh.c" \

@@ -55,6 +55,9 @@ static const char features_usage_text[] =
     "                       zline-img2c converts it: RGB565, or RGBA4444 when the\n"
     "                       image has alpha\n"
     "  --affine             with --texture: affine (screen-linear) mapping\n"
+    "  --tex-filter F       with --texture: nearest (default) or bilinear\n"
+    "  --tex-wrap W[,T]     with --texture: repeat (default) or clamp (to the\n"
+    "                       edge texels); W,T sets the s and t axes apart\n"
     "  --blend MODE[,A]     blend the model over the background: alpha or add,\n"
     "                       with constant alpha A (0..255, default 255) times the\n"
     "                       texture's alpha\n";
@@ -178,6 +181,9 @@ typedef struct {
     uint32_t edge_count;
     const char *texture_path; /* --texture */
     int affine;               /* --affine */
+    int tex_filter;           /* --tex-filter: zl_tex_filter */
+    int wrap_s, wrap_t;       /* --tex-wrap: zl_wrap per axis */
+    int have_tex_options;     /* --tex-filter or --tex-wrap given */
     int blend, alpha;         /* --blend MODE[,A]: zl_blend, constant alpha */
     zl_texture texture;
     const zl_fixed *texcoords;
@@ -333,6 +339,31 @@ static int parse_uint(const char *s, unsigned long max, unsigned long *out)
     }
     *out = v;
     return 1;
+}
+
+/* One wrap mode by name: repeat or clamp (zl_wrap), n characters of s. */
+static int parse_wrap(const char *s, size_t n, int *out)
+{
+    if (n == 6 && strncmp(s, "repeat", 6) == 0)
+        *out = ZL_WRAP_REPEAT;
+    else if (n == 5 && strncmp(s, "clamp", 5) == 0)
+        *out = ZL_WRAP_CLAMP;
+    else
+        return 0;
+    return 1;
+}
+
+/* --tex-wrap: one mode for both axes, or S,T (zl_texture's wrap_s, wrap_t). */
+static int parse_wrap_pair(const char *s, int *wrap_s, int *wrap_t)
+{
+    const char *comma = strchr(s, ',');
+    if (comma == NULL) {
+        if (!parse_wrap(s, strlen(s), wrap_s))
+            return 0;
+        *wrap_t = *wrap_s;
+        return 1;
+    }
+    return parse_wrap(s, (size_t)(comma - s), wrap_s) && parse_wrap(comma + 1, strlen(comma + 1), wrap_t);
 }
 
 static int parse_rgb(const char *s, zl_rgb *out)
@@ -822,6 +853,20 @@ static int parse_options(int argc, char **argv, options *o)
         } else if (FLAG("--affine")) {
             NO_VALUE;
             o->affine = 1;
+        } else if (FLAG("--tex-filter")) {
+            NEEDS_VALUE;
+            if (strcmp(val, "nearest") == 0)
+                o->tex_filter = ZL_FILTER_NEAREST;
+            else if (strcmp(val, "bilinear") == 0)
+                o->tex_filter = ZL_FILTER_BILINEAR;
+            else
+                return usage_error("--tex-filter: expected nearest or bilinear, got '%s'", val);
+            o->have_tex_options = 1;
+        } else if (FLAG("--tex-wrap")) {
+            NEEDS_VALUE;
+            if (!parse_wrap_pair(val, &o->wrap_s, &o->wrap_t))
+                return usage_error("--tex-wrap: expected repeat or clamp, or two of them as S,T, got '%s'", val);
+            o->have_tex_options = 1;
         } else if (FLAG("--blend")) {
             unsigned long alpha = 255;
             const char *comma;
@@ -890,6 +935,8 @@ static int parse_options(int argc, char **argv, options *o)
     }
     if (o->band_rows > o->height)
         o->band_rows = o->height;
+    if (o->have_tex_options && o->texture_path == NULL)
+        return usage_error("--tex-filter and --tex-wrap need --texture");
     if (check_state_options(o) != 0)
         return EXIT_USAGE;
     if (o->visibility != 0 && (o->depth_out != NULL || o->shade != SHADE_FLAT || o->pixel_space ||
@@ -1134,6 +1181,7 @@ static void style_of(const options *o, zl_style *sty)
         sty->texture = &o->texture;
         sty->texcoords = o->texcoords;
         sty->tex_mapping = (uint8_t)(o->affine ? ZL_TEX_AFFINE : ZL_TEX_PERSPECTIVE);
+        sty->tex_filter = (uint8_t)o->tex_filter;
     }
     sty->blend = (uint8_t)o->blend;
     sty->alpha = (uint8_t)(o->blend ? o->alpha : 255);
@@ -1505,8 +1553,8 @@ static int load_texture(options *o, const zl_obj *obj, uint16_t **texels)
     o->texture.width = (uint16_t)img.width;
     o->texture.height = (uint16_t)img.height;
     o->texture.stride = (uint16_t)img.width;
-    o->texture.wrap_s = ZL_WRAP_REPEAT;
-    o->texture.wrap_t = ZL_WRAP_REPEAT;
+    o->texture.wrap_s = (uint8_t)o->wrap_s;
+    o->texture.wrap_t = (uint8_t)o->wrap_t;
     o->texture.format = (uint8_t)fmt;
     o->texcoords = obj->texcoords;
     zl_image_free(&img);

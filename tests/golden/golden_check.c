@@ -15,7 +15,8 @@
  * The vertices go through the library's matrix functions (the transform is
  * tested on its own in test_fixed); from the clip-space positions on, every
  * step is the reference's: window coordinates, snapping, culling by winding,
- * coverage by the top-left rule, the exact depth plane, the nearest triangle
+ * coverage by the top-left rule, the exact depth plane (through the
+ * unsnapped vertices, tri_depth), the nearest triangle
  * per pixel, and the pixel's colour from the contract in double precision:
  *   flat    ambient + (255 - ambient) * max(0, n . l), n the model-space face
  *           normal, times the model colour;
@@ -137,6 +138,34 @@ typedef struct {
     int32_t bx0, by0, bx1, by1;
 } tri_rec;
 
+/*
+ * The stored depth range at pixel (i, j) by the contract (issue 22): the
+ * triangle's depth plane through its unsnapped window vertices (raw, 2^-16
+ * px), not the snapped ones zt_tri_depth takes, in long double (64-bit
+ * mantissa: far below a step here), within +-1 of it. zt_tri_depth's
+ * steep triangles keep its clamped range.
+ */
+static void tri_depth(const tri_rec *r, int32_t i, int32_t j, zt_depth_ref *d)
+{
+    const int64_t *v = r->raw;
+    long double x1 = (long double)(v[3] - v[0]), y1 = (long double)(v[4] - v[1]), x2 = (long double)(v[6] - v[0]);
+    long double y2 = (long double)(v[7] - v[1]), z1 = (long double)(v[5] - v[2]), z2 = (long double)(v[8] - v[2]);
+    long double c = x1 * y2 - x2 * y1, px, py, z;
+    zt_tri_depth(&r->t, i, j, d);
+    if (d->steep || r->t.area == 0 || c == 0)
+        return;
+    px = (i + 0.5L) * 65536.0L - (long double)v[0];
+    py = (j + 0.5L) * 65536.0L - (long double)v[1];
+    z = (long double)v[2] + (px * (z1 * y2 - z2 * y1) + py * (x1 * z2 - x2 * z1)) / c;
+    z = z * 65535.0L / 65536.0L; /* raw Q16 window depth to stored steps */
+    d->lo = (int32_t)ceill(z - 1.0L);
+    d->hi = (int32_t)floorl(z + 1.0L);
+    d->nearest = (int32_t)floorl(z + 0.5L);
+    d->lo = d->lo < 0 ? 0 : (d->lo > 65535 ? 65535 : d->lo);
+    d->hi = d->hi < 0 ? 0 : (d->hi > 65535 ? 65535 : d->hi);
+    d->nearest = d->nearest < 0 ? 0 : (d->nearest > 65535 ? 65535 : d->nearest);
+}
+
 static int64_t edge_fn(const tri_rec *r, unsigned k, int64_t cx, int64_t cy, int64_t *len2)
 {
     unsigned p = (k + 1) % 3, q = (k + 2) % 3;
@@ -195,7 +224,7 @@ static int expected(const scene *sc, uint32_t t, int32_t x, int32_t y, int *lo, 
         zt_depth_ref d;
         uint32_t span = sc->dmax > sc->dmin ? (uint32_t)(sc->dmax - sc->dmin) : 1u;
         double g_near, g_far;
-        zt_tri_depth(&r->t, x, y, &d);
+        tri_depth(r, x, y, &d);
         g_near = d.lo <= sc->dmin ? 255 : d.lo >= sc->dmax ? 64 : 255.0 - (d.lo - sc->dmin) * 191.0 / span;
         g_far = d.hi <= sc->dmin ? 255 : d.hi >= sc->dmax ? 64 : 255.0 - (d.hi - sc->dmin) * 191.0 / span;
         for (c = 0; c < 3; c++) {
@@ -347,7 +376,7 @@ static void visit(scene *sc, px_state *px, int pass)
                 zt_depth_ref d;
                 if (cov == 0)
                     continue;
-                zt_tri_depth(&r->t, x, y, &d);
+                tri_depth(r, x, y, &d);
                 if (pass == 0) {
                     s->near_border |= (uint8_t)near_border;
                     if (zt_tri_covers(&r->t, x, y) && d.nearest < s->zsure)

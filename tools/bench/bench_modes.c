@@ -213,7 +213,7 @@ int main(int argc, char **argv)
     for (i = 0; i < sizeof bands / sizeof bands[0]; i++) {
         frame_result r = render_frame_api(&s, (uint16_t)bands[i], needs, 0);
         size_t band_px = (size_t)BENCH_W * (size_t)bands[i];
-        size_t vcache = (size_t)s.mesh.vertex_count * 8;
+        size_t vcache = ZL_VERTEX_CACHE_BYTES(s.mesh.vertex_count);
         char name[32];
         if (bands[i] == 1)
             snprintf(name, sizeof name, "scanline (band=1)");

@@ -56,8 +56,8 @@
  * cache, used when the caller gives no vertex cache (zl_context.vertex_cache
  * NULL or too small) but a draw cache (zl_context.draw_cache, caller memory
  * of zl_draw_cache_bytes() bytes). Direct-mapped by vertex index; each entry
- * costs 10 bytes (an 8-byte window vertex and a 2-byte tag), plus 144 bytes
- * for the draw's transform set-up: the default 1024 is 10384 bytes. A power
+ * costs 14 bytes (a 12-byte window vertex and a 2-byte tag), plus 144 bytes
+ * for the draw's transform set-up: the default 1024 is 14480 bytes. A power
  * of two from 2 to 32768, or 0 for no cache (then each triangle transforms
  * and clips its own three vertices: slower, the same pixels; so does a draw
  * given no draw cache). Measured on the bunny (docs/MEASUREMENTS.md,
@@ -123,6 +123,15 @@
  *                        polygon modes LINE and POINT, antialiased lines
  *   ZL_FEATURE_OUTLINES  outlines (zl_draw_outlines, zl_frame_add_outlines;
  *                        zl_mesh_edges finds no edge)
+ *   ZL_FEATURE_EXACT_DEPTH  with the exact depth mapping (zl_state near_z,
+ *                        far_z), the depth plane through the unsnapped
+ *                        vertices (issue 22: within +-1 of exact at every
+ *                        pixel). It keeps 4 bytes more a cached vertex
+ *                        (ZL_VERTEX_CACHE_BYTES: 12 instead of 8; the
+ *                        scanline bunny's work buffer 35,464 bytes instead
+ *                        of 28,104). Off, the plane goes through the
+ *                        snapped vertices whatever the mapping (zline.h,
+ *                        Pseudodepth); nothing returns ZL_ERR_UNSUPPORTED.
  *
  * Off, a style that asks for the feature makes every draw and submission
  * with it return ZL_ERR_UNSUPPORTED (zl_style_check). Flat and Gouraud
@@ -141,8 +150,12 @@
 #ifndef ZL_FEATURE_OUTLINES
 #define ZL_FEATURE_OUTLINES 1
 #endif
+#ifndef ZL_FEATURE_EXACT_DEPTH
+#define ZL_FEATURE_EXACT_DEPTH 1
+#endif
 #if (ZL_FEATURE_TEXTURES != 0 && ZL_FEATURE_TEXTURES != 1) || (ZL_FEATURE_BLEND != 0 && ZL_FEATURE_BLEND != 1) || \
-    (ZL_FEATURE_LINES != 0 && ZL_FEATURE_LINES != 1) || (ZL_FEATURE_OUTLINES != 0 && ZL_FEATURE_OUTLINES != 1)
+    (ZL_FEATURE_LINES != 0 && ZL_FEATURE_LINES != 1) || (ZL_FEATURE_OUTLINES != 0 && ZL_FEATURE_OUTLINES != 1) || \
+    (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1)
 #error "each ZL_FEATURE_* must be 0 or 1"
 #endif
 
@@ -153,7 +166,7 @@
  */
 #define ZL_FEATURES                                                                                       \
     ((unsigned)ZL_FEATURE_TEXTURES | ((unsigned)ZL_FEATURE_BLEND << 1) | ((unsigned)ZL_FEATURE_LINES << 2) | \
-     ((unsigned)ZL_FEATURE_OUTLINES << 3))
+     ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4))
 
 /*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library

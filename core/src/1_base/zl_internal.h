@@ -29,6 +29,18 @@ typedef struct {
     uint16_t r, g, b;   /* colour, Q8 (0 .. 255 * 256) */
 } zl_wvert;
 
+/* The depth plane goes through the vertices at their unsnapped window
+ * positions, kept to 2^-ZL_FINE_BITS subpixel (2^-16 pixel) as residuals
+ * from the snapped position (zl_poly and zl_cached_vertex fx, fy: within
+ * +-1/2 subpixel plus the rounding of the clip coordinates, saturated to
+ * int16). */
+#define ZL_FINE_BITS 12
+/* fx of a vertex drawn without the exact depth mapping (state near_z, far_z
+ * 0, or pixel space): its depth plane is solved through the snapped
+ * vertices, as the mapping z_clip / w_clip is biased by its Q16.16 matrix
+ * anyway, and the draw pays for no residual. */
+#define ZL_FINE_NONE INT16_MIN
+
 /* Clip-space vertex carried through clipping. */
 typedef struct {
     int32_t x, y, z, w; /* Q16.16 */
@@ -39,13 +51,27 @@ typedef struct {
 } zl_cvert;
 #define ZL_ZD_NONE 0xFFFFFFFFu
 
-/* Cached window vertex of scanline mode: 8 bytes. x == ZL_CACHE_COMPLEX marks a
+/* Cached window vertex of scanline mode: 12 bytes, 8 without
+ * ZL_FEATURE_EXACT_DEPTH. x == ZL_CACHE_COMPLEX marks a
  * vertex outside a clip plane or outside the int16 window range; triangles
  * using it take the clipping path, which recomputes it exactly. */
 typedef struct {
     int16_t x, y;
     uint32_t z;
+#if ZL_FEATURE_EXACT_DEPTH
+    int16_t fx, fy; /* zl_wvert's */
+#endif
 } zl_cached_vertex;
+/* A cached vertex's residuals (ZL_FINE_NONE where they are not kept). */
+#if ZL_FEATURE_EXACT_DEPTH
+#define ZL_CV_FX(c) ((c)->fx)
+#define ZL_CV_FY(c) ((c)->fy)
+#define ZL_CV_SET_FINE(c, x, y) ((c)->fx = (int16_t)(x), (c)->fy = (int16_t)(y))
+#else
+#define ZL_CV_FX(c) ((void)(c), (int16_t)ZL_FINE_NONE)
+#define ZL_CV_FY(c) ((void)(c), (int16_t)ZL_FINE_NONE)
+#define ZL_CV_SET_FINE(c, x, y) ((void)(c), (void)(x), (void)(y))
+#endif
 #define ZL_CACHE_COMPLEX INT16_MIN
 #define ZL_CACHE_INVALID (INT16_MIN + 1) /* transform out of range: triangles dropped */
 
@@ -67,6 +93,8 @@ typedef struct {
                            in one byte each, so zl_poly stays 208 bytes */
     zl_rgb flat;        /* lit flat colour */
     uint8_t light;      /* lighting intensity 0..255 (255 with the light off) */
+    int16_t fx[3], fy[3]; /* residuals (ZL_FINE_BITS) of v[0..2] when n = 3 and not clipped: kept here,
+                             not in zl_wvert, so the polygon grows by 12 bytes, not 40 (stack bound) */
 } zl_poly;
 
 /* A polygon with texture attributes per vertex, for styles that need
@@ -307,6 +335,9 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out);
 unsigned zl_outcode(const zl_source *s, const zl_cvert *v);
 /* Project and snap an inside vertex to window space. */
 void zl_project(const zl_source *s, const zl_cvert *v, zl_wvert *out);
+/* The residuals (fx, fy) of w, zl_project's window vertex of mesh vertex
+ * idx (unclipped), from the unrounded transform. */
+void zl_vertex_residuals(const zl_source *s, uint16_t idx, const zl_wvert *w, int16_t *fx, int16_t *fy);
 /*
  * A draw's transform to window space with the per-draw work done once
  * (2_geometry/zl_vertex.c): zl_vx_prepare fills it (0 when a matrix entry
@@ -359,6 +390,12 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
  * leaves 0 .. 65535 beyond the near and far planes) at three subpixel
  * positions; 0 when it has no plane. */
 int zl_tri_orig_depths3(const zl_source *s, uint32_t t, const int32_t x[3], const int32_t y[3], int64_t z[3]);
+/* The same for an unclipped triangle (a, b, c): the values (Q16, unclamped)
+ * of the depth plane the set-up gives it (through its unsnapped vertices,
+ * zl_depth_plane_exact) at the subpixel points (x[k], y[k]); 0 when the
+ * set-up would take the plane through the snapped vertices. */
+int zl_tri_exact_depths3(const zl_poly *poly, const zl_wvert *a, const zl_wvert *b, const zl_wvert *c,
+                         const int32_t x[3], const int32_t y[3], int64_t z[3]);
 /* The texture and perspective planes of triangle tri before clipping (the
  * scales of zl_texplanes, q scaled so that 2^24 is at clip w = wmin, the
  * least w of the clipped polygon), at the anchor of record t (t->ax,
@@ -398,6 +435,12 @@ int zl_tri_setup_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_styl
 void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
                        const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st, int32_t first,
                        int32_t end);
+/* zl_tri_setup_rows with the residuals of a, b, c given (res: fx, fy of
+ * each, ZL_FINE_BITS; NULL: the depth plane through the snapped vertices)
+ * instead of taken from poly. */
+void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                           const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const int16_t *res,
+                           const zl_state *st, int32_t first, int32_t end);
 /* zl_tri_row for a triangle set up by zl_tri_setup_ex with the same style. */
 int zl_tri_row_ex(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_span_state *ss,
                   uint8_t *color_row, uint16_t *depth_row);

@@ -92,6 +92,8 @@ static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *
         w->x = c->x;
         w->y = c->y;
         w->z = c->z;
+        out->fx[k] = ZL_CV_FX(c);
+        out->fy[k] = ZL_CV_FY(c);
         w->r = (uint16_t)color_q8(s->mesh, idx[k], 0);
         w->g = (uint16_t)color_q8(s->mesh, idx[k], 1);
         w->b = (uint16_t)color_q8(s->mesh, idx[k], 2);
@@ -105,14 +107,15 @@ static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out
 {
     zl_cvert a[ZL_MAX_POLY], b[ZL_MAX_POLY];
     zl_cvert *src = a, *dst = b, *tmp;
-    unsigned codes[3], all_out, any_out, plane, n = 3, k;
-    for (k = 0; k < 3; k++) {
+    unsigned all_out = 0x7Fu, any_out = 0, plane, n = 3, k;
+    for (k = 0; k < 3; k++) { /* the outcodes folded as they come: no array on this deep frame */
+        unsigned code;
         if (!zl_vertex_clip(s, idx[k], &a[k]))
             return 0;
-        codes[k] = zl_outcode(s, &a[k]);
+        code = zl_outcode(s, &a[k]);
+        all_out &= code;
+        any_out |= code;
     }
-    all_out = codes[0] & codes[1] & codes[2];
-    any_out = codes[0] | codes[1] | codes[2];
     if (all_out != 0)
         return 0;
     for (plane = 0; plane < PLANE_COUNT && n >= 3; plane++) {
@@ -137,6 +140,16 @@ int zl_tri_polygon(const zl_source *s, uint32_t t, zl_poly *out)
     return zl_tri_polygon_ex(s, NULL, t, out);
 }
 
+/* The residuals of an unclipped triangle polygon_clipped made (the
+ * unsnapped positions of its depth plane). Out of line: not on top of the
+ * clipper's frame. */
+static ZL_NOINLINE void poly_residuals(const zl_source *s, const uint16_t *idx, zl_poly *out)
+{
+    unsigned k;
+    for (k = 0; k < 3; k++)
+        zl_vertex_residuals(s, idx[k], &out->v[k], &out->fx[k], &out->fy[k]);
+}
+
 int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out)
 {
     const uint16_t *idx = &s->mesh->indices[t * 3u];
@@ -147,11 +160,14 @@ int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_
         if (x0 == ZL_CACHE_INVALID || x1 == ZL_CACHE_INVALID || x2 == ZL_CACHE_INVALID)
             return 0;
         if (x0 != ZL_CACHE_COMPLEX && x1 != ZL_CACHE_COMPLEX && x2 != ZL_CACHE_COMPLEX)
-            ok = polygon_from_cache(s, idx, out);
-        else
-            ok = polygon_clipped(s, idx, out);
-    } else {
-        ok = polygon_clipped(s, idx, out);
+            return polygon_from_cache(s, idx, out); /* the residuals from the cache */
+    }
+    ok = polygon_clipped(s, idx, out);
+    if (ok && !out->clipped) {
+        if (s->mvp != NULL && s->state != NULL && s->state->far_z != 0)
+            poly_residuals(s, idx, out);
+        else /* no exact mapping: the snapped plane (zl_vertex_residuals' answer, without the calls) */
+            out->fx[0] = out->fx[1] = out->fx[2] = ZL_FINE_NONE;
     }
     return ok;
 }

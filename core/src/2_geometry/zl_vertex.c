@@ -35,6 +35,33 @@ static ZL_ALWAYS_INLINE uint32_t shr_low(uint64_t v, unsigned s)
 }
 
 /*
+ * The residual of a window coordinate (zl_wvert fx, fy): 2^ZL_FINE_BITS
+ * times (exact - snapped) subpixels, where exact = h + c h / w (neg 0) or
+ * h - c h / w (neg 1) from the transform's unrounded sums c and w (2^-32
+ * units, w > 0) and snapped is the coordinate the rasteriser uses (from the
+ * rounded Q16.16 clip coordinates). |c| h 2^12 / w by one 64/32 division of
+ * the sums shifted until w fits 32 bits: with |c| <= 4 w the quotient is
+ * below 2^29 and its error below 1/8 unit (relative 2^-31). Saturated to
+ * int16; 0 beyond |c| = 4 w (outside every guard band: never drawn
+ * unclipped).
+ */
+static int16_t fine_residual(int64_t c, int64_t w, uint32_t h, int neg, int32_t snapped)
+{
+    uint64_t ac = c < 0 ? (uint64_t)0 - (uint64_t)c : (uint64_t)c, n;
+    uint32_t d, e;
+    unsigned s;
+    int64_t r;
+    if (w <= 0 || ac > ((uint64_t)w << 2))
+        return 0;
+    s = bits_u32((uint32_t)((uint64_t)w >> 32)); /* |w| < 2^47: s <= 15 */
+    d = shr_low((uint64_t)w, s);                  /* >= 2^31 when s > 0 */
+    n = ((ac >> s) * h) << ZL_FINE_BITS;          /* below 2^34 2^15 2^12 */
+    e = zl_udiv64_32(n, d, NULL);
+    r = ((int64_t)h << ZL_FINE_BITS) + (neg ? -(int64_t)e : (int64_t)e) - (int64_t)snapped * (1 << ZL_FINE_BITS);
+    return (int16_t)(r < -32767 ? -32767 : (r > 32767 ? 32767 : r));
+}
+
+/*
  * The exact pseudodepth (zline.h, Pseudodepth) of eye distance d = dq / 2^32
  * (dq the clip w's 64-bit sum, Q32, before rounding; below 2^47) for near
  * n = N / 2^16 and far f = F / 2^16, in 1/65536 steps:
@@ -85,6 +112,25 @@ static ZL_NOINLINE uint32_t vertex_exact_depth(const zl_source *s, const zl_fixe
     const zl_fixed *m = &s->mvp->m[12];
     return depth_of_wsum(s->state, (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2] +
                                        (int64_t)m[3] * ZL_FX_ONE);
+}
+
+/* Row r of the transform of p, unrounded (2^-32 units; below 2^47 when
+ * zl_transform_point succeeded). */
+static int64_t transform_sum(const zl_mat4 *m, int r, const zl_fixed *p)
+{
+    const zl_fixed *row = &m->m[r * 4];
+    return (int64_t)row[0] * p[0] + (int64_t)row[1] * p[1] + (int64_t)row[2] * p[2] + (int64_t)row[3] * ZL_FX_ONE;
+}
+
+void zl_vertex_residuals(const zl_source *s, uint16_t idx, const zl_wvert *w, int16_t *fx, int16_t *fy)
+{
+    const zl_fixed *p = &s->mesh->positions[idx * 3u];
+    *fx = *fy = ZL_FINE_NONE;
+    if (ZL_FEATURE_EXACT_DEPTH && s->mvp != NULL && s->state != NULL && s->state->far_z != 0) { /* the exact mapping only */
+        int64_t ws = transform_sum(s->mvp, 3, p), xs = transform_sum(s->mvp, 0, p), ys = transform_sum(s->mvp, 1, p);
+        *fx = fine_residual(xs, ws, s->width * (uint32_t)(ZL_SUB_ONE / 2), xs < 0, w->x);
+        *fy = fine_residual(ys, ws, s->height * (uint32_t)(ZL_SUB_ONE / 2), ys > 0, w->y);
+    }
 }
 
 int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
@@ -214,15 +260,19 @@ static zl_cached_vertex cache_vertex_generic(const zl_source *s, uint16_t idx)
     zl_cached_vertex c;
     zl_cvert v;
     zl_wvert w;
+    int16_t fx, fy;
     c.x = ZL_CACHE_INVALID;
     c.y = 0;
     c.z = 0;
+    ZL_CV_SET_FINE(&c, 0, 0);
     if (!zl_vertex_clip(s, idx, &v))
         return c;
     c.x = ZL_CACHE_COMPLEX;
     if (zl_outcode(s, &v) != 0)
         return c;
     zl_project(s, &v, &w);
+    zl_vertex_residuals(s, idx, &w, &fx, &fy);
+    ZL_CV_SET_FINE(&c, fx, fy);
     /* INT16_MIN and INT16_MIN + 1 are the markers, so they never hold data. */
     if (w.x <= ZL_CACHE_INVALID || w.x > INT16_MAX || w.y < INT16_MIN || w.y > INT16_MAX)
         return c;
@@ -332,6 +382,28 @@ static int32_t vx_window(uint32_t h, int32_t c, int neg, uint32_t w)
     return neg ? (int32_t)h - (int32_t)q : (int32_t)(h + q);
 }
 
+/* Row r of the transform, unrounded (2^-32 units): bias[r] holds 2^15 of rounding. */
+static ZL_ALWAYS_INLINE int64_t vx_sum(const vx_setup *vs, int r, const zl_fixed *p)
+{
+    const zl_fixed *m = &vs->m[r * 4];
+    return vs->bias[r] - 32768 + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+}
+
+/* The residuals (zl_wvert fx, fy) of a cached vertex c, set up to its
+ * snapped x and y, as clip_residuals makes them. Out of line: once per
+ * vertex, and the transform's registers are free by then. */
+static ZL_NOINLINE void vx_residuals(const vx_setup *vs, const zl_fixed *p, zl_cached_vertex *c)
+{
+    int64_t w, x, y;
+    ZL_CV_SET_FINE(c, ZL_FINE_NONE, ZL_FINE_NONE);
+    if (!ZL_FEATURE_EXACT_DEPTH || vs->exact == NULL)
+        return; /* ZL_FINE_NONE: the snapped plane */
+    w = vx_sum(vs, 3, p);
+    x = vx_sum(vs, 0, p);
+    y = vx_sum(vs, 1, p);
+    ZL_CV_SET_FINE(c, fine_residual(x, w, vs->hx, x < 0, c->x), fine_residual(y, w, vs->hy, y > 0, c->y));
+}
+
 static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed *p)
 {
     zl_cached_vertex c;
@@ -339,6 +411,7 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
     c.x = ZL_CACHE_INVALID;
     c.y = 0;
     c.z = 0;
+    ZL_CV_SET_FINE(&c, 0, 0);
     if (!in_limit(p[0]) || !in_limit(p[1]) || !in_limit(p[2]) || !vx_row(vs, 0, p, &x) ||
         !vx_row(vs, 1, p, &y) || !vx_row(vs, 2, p, &z) || !vx_row(vs, 3, p, &w))
         return c;
@@ -351,6 +424,7 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
         return c;
     c.x = (int16_t)wx;
     c.y = (int16_t)wy;
+    vx_residuals(vs, p, &c);
     if (vs->exact != NULL) {
         const zl_fixed *m = &vs->m[12];
         /* bias[3] holds 2^15 for the rounding: the sum itself is without it */
@@ -476,6 +550,7 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
         c->x = ZL_CACHE_COMPLEX; /* outside the w, near or far plane */
         c->y = 0;
         c->z = 0;
+        ZL_CV_SET_FINE(c, 0, 0);
         return 1;
     }
 #if ZL_MUL32_ONLY
@@ -512,6 +587,10 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
         return 0;
     c->x = (int16_t)wx;
     c->y = (int16_t)(y > 0 ? (int32_t)vs->hy - (int32_t)q : (int32_t)(vs->hy + q));
+    if (exact)
+        vx_residuals(vs, p, c);
+    else
+        ZL_CV_SET_FINE(c, ZL_FINE_NONE, ZL_FINE_NONE);
     /* the exact mapping from w's sum without bias[3]'s 2^15 of rounding */
     c->z = exact ? depth_of_wsum(vs->exact, wsum - 32768) : depth_q16((uint32_t)z, (uint32_t)w);
     return 1;
@@ -537,7 +616,11 @@ zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
     if (s->mvp == NULL)
         return cache_vertex_generic(s, idx);
     if (!vx_prepare(s, &vs)) {
-        zl_cached_vertex c = {ZL_CACHE_INVALID, 0, 0};
+        zl_cached_vertex c;
+        c.x = ZL_CACHE_INVALID;
+        c.y = 0;
+        c.z = 0;
+        ZL_CV_SET_FINE(&c, 0, 0);
         return c;
     }
     {
@@ -551,11 +634,15 @@ zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
 
 zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_t first, uint16_t count)
 {
-    const zl_cached_vertex bad = {ZL_CACHE_INVALID, 0, 0};
+    zl_cached_vertex bad;
     const zl_fixed *p = &s->mesh->positions[first * 3u];
     zl_cached_vertex *c = &cache[first], *end = c + count;
     zl_status st = ZL_OK;
     vx_setup vs;
+    bad.x = ZL_CACHE_INVALID;
+    bad.y = 0;
+    bad.z = 0;
+    ZL_CV_SET_FINE(&bad, 0, 0);
     if (s->mvp == NULL) {
         /* Pixel space: nothing can be out of range. */
         uint32_t v;

@@ -284,6 +284,27 @@ ZL_SHARED_STATIC int64_t attr_at(const zl_attr *a, int32_t x, int32_t ax, int64_
     return clamp64(a->row + (int64_t)(x - ax) * a->dx, lo, hi);
 }
 
+/* A vertex for zl_depth_plane_exact: snapped subpixels, residuals
+ * (zl_wvert fx, fy) and depth (Q16). */
+typedef struct {
+    int32_t x, y, fx, fy;
+    uint32_t z;
+} zl_fine_vert;
+
+/*
+ * The depth plane of a triangle (v sorted by y as the set-up sorts them)
+ * through its vertices at their unsnapped positions (issue 22), anchored
+ * at the centre of pixel (ax, ay) and stepped to row `first` as
+ * plane_setup anchors it, and the range [zlo, zhi] (Q16) its values at the
+ * pixel centres the snapped triangle covers lie in. 0 when the caller must
+ * take the plane through the snapped vertices instead: an edge of 2^17
+ * subpixels or more, a degenerate unsnapped triangle, or a range that
+ * leaves the depth range. Every set-up calls it, so all give the same
+ * plane.
+ */
+int zl_depth_plane_exact(zl_attr *z, uint32_t *zlo, uint32_t *zhi, const zl_fine_vert *v, int32_t ax, int32_t ay,
+                         int32_t first);
+
 /* ZL_SHORT_SPAN and tiny_x: zl_span.h (shared with scanline mode's rows). */
 
 #endif /* ZL_RASTER_H */

@@ -142,6 +142,129 @@ static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t 
     at->row = base + (int64_t)(pf->first - pf->ay) * at->dy;
 }
 
+/* ------------------------------------ the depth plane of the unsnapped triangle */
+
+/* Bit length of v (0 for 0): CLZ where the compiler has it. */
+static ZL_ALWAYS_INLINE unsigned bits64(uint64_t v)
+{
+    uint32_t hi = (uint32_t)(v >> 32), w = hi != 0 ? hi : (uint32_t)v;
+    unsigned n = hi != 0 ? 32u : 0u;
+#if defined(__GNUC__) && __SIZEOF_INT__ >= 4 /* __builtin_clz counts in an unsigned int */
+    return w == 0 ? 0u : n + 32u - (unsigned)__builtin_clz(w);
+#else
+    while (w != 0) {
+        w >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/*
+ * round(g 2^k / c32) (zl_depth_plane_exact's gradients: c = c32 2^s, k
+ * holds the -s): the numerator shifted left as far as 2^62 allows (exact),
+ * divided by the reciprocal of c32 (>= 2^31, so any numerator below 2^63
+ * qualifies), and the rest of the shift applied to the quotient (relative
+ * error below 2^-30 then); saturated at ZL_GRAD_LIMIT.
+ */
+static int64_t scaled_quotient(int64_t g, const zl_div_inv *inv, uint32_t c32, int k)
+{
+    uint64_t m = g < 0 ? (uint64_t)0 - (uint64_t)g : (uint64_t)g;
+    uint64_t q;
+    int t;
+    if (m == 0)
+        return 0;
+    if (k >= 0) {
+        t = 62 - (int)bits64(m);
+        t = t < k ? t : k;
+        q = zl_div_inv_q(inv, (m << t) + (t == k ? c32 / 2u : 0u));
+        if (k - t >= 43 || (q >> (43 - (k - t))) != 0)
+            q = (uint64_t)ZL_GRAD_LIMIT;
+        else
+            q <<= k - t;
+    } else {
+        q = zl_div_inv_q(inv, m); /* m < 2^63 */
+        q = -k >= 40 ? 0 : (q + ((uint64_t)1 << (-k - 1))) >> -k;
+    }
+    if (q > (uint64_t)ZL_GRAD_LIMIT)
+        q = (uint64_t)ZL_GRAD_LIMIT;
+    return g < 0 ? -(int64_t)q : (int64_t)q;
+}
+
+int zl_depth_plane_exact(zl_attr *z, uint32_t *zlo, uint32_t *zhi, const zl_fine_vert *v, int32_t ax, int32_t ay,
+                         int32_t first)
+{
+    const int64_t top = (int64_t)65535 << 16, slack = 256; /* Q16: the computed plane's rounding */
+    int64_t x0 = (int64_t)v[0].x * (1 << ZL_FINE_BITS) + v[0].fx, y0 = (int64_t)v[0].y * (1 << ZL_FINE_BITS) + v[0].fy;
+    int64_t dx1 = (int64_t)v[1].x * (1 << ZL_FINE_BITS) + v[1].fx - x0;
+    int64_t dy1 = (int64_t)v[1].y * (1 << ZL_FINE_BITS) + v[1].fy - y0;
+    int64_t dx2 = (int64_t)v[2].x * (1 << ZL_FINE_BITS) + v[2].fx - x0;
+    int64_t dy2 = (int64_t)v[2].y * (1 << ZL_FINE_BITS) + v[2].fy - y0;
+    int64_t c, d1 = (int64_t)v[1].z - v[0].z, d2 = (int64_t)v[2].z - v[0].z, ga, gb, gx, gy, ox, oy, margin, lo, hi;
+    uint64_t ac;
+    uint32_t c32, r = 0;
+    zl_div_inv inv;
+    int s, k;
+    /* |dx|, |dy| below 2^17 subpixels: fine differences below 2^29.1, their
+     * products (and c) below 2^59.2, ga and gb below 2^62.2 */
+    for (k = 1; k < 3; k++)
+        if (v[k].x - v[0].x <= -(INT32_C(1) << 17) || v[k].x - v[0].x >= (INT32_C(1) << 17) || v[k].y - v[0].y <= -(INT32_C(1) << 17) ||
+            v[k].y - v[0].y >= (INT32_C(1) << 17))
+            return 0;
+    c = dx1 * dy2 - dx2 * dy1;
+    if (c == 0)
+        return 0;
+    ga = d1 * dy2 - d2 * dy1;
+    gb = dx1 * d2 - dx2 * d1;
+    if (c < 0) {
+        c = -c;
+        ga = -ga;
+        gb = -gb;
+    }
+    /* c = c32 2^s with c32 in [2^31, 2^32) (exact when s <= 0) */
+    ac = (uint64_t)c;
+    s = (int)bits64(ac) - 32;
+    c32 = s >= 0 ? (uint32_t)(ac >> s) : (uint32_t)(ac << -s);
+    zl_div_inv_init(&inv, c32);
+    /* Q20 per pixel = g 2^(4 + 4 + ZL_FINE_BITS) / c: a pixel is 2^(4 + ZL_FINE_BITS) fine units */
+    gx = scaled_quotient(ga, &inv, c32, ZL_SUB_BITS + ZL_FINE_BITS + (ZL_ATTR_FRAC - 16) - s);
+    gy = scaled_quotient(gb, &inv, c32, ZL_SUB_BITS + ZL_FINE_BITS + (ZL_ATTR_FRAC - 16) - s);
+    /* the anchor pixel's centre from v0, in fine units (below 2^18) */
+    ox = ((int64_t)ax * ZL_SUB_ONE + ZL_SUB_HALF) * (1 << ZL_FINE_BITS) - x0;
+    oy = ((int64_t)ay * ZL_SUB_ONE + ZL_SUB_HALF) * (1 << ZL_FINE_BITS) - y0;
+    z->dx = gx;
+    z->dy = gy;
+    z->row = (int64_t)v[0].z * (1 << (ZL_ATTR_FRAC - 16)) +
+             zl_floor_shift64(gx * ox + gy * oy + ((int64_t)1 << (ZL_SUB_BITS + ZL_FINE_BITS - 1)),
+                              ZL_SUB_BITS + ZL_FINE_BITS) +
+             (int64_t)(first - ay) * gy;
+    /*
+     * A pixel centre the snapped triangle covers is within max |f| (fine
+     * units) of the unsnapped one on each axis, so the plane there is
+     * within (|gx| + |gy|) max |f| of the vertex range: the clamp range.
+     * When that leaves 0 .. 65535 by more than a quarter step, the span
+     * loops' unclamped steps could leave it too: 0, the snapped plane.
+     */
+    for (k = 0; k < 3; k++) {
+        uint32_t f = (uint32_t)(v[k].fx < 0 ? -v[k].fx : v[k].fx), g = (uint32_t)(v[k].fy < 0 ? -v[k].fy : v[k].fy);
+        r = f > r ? f : r;
+        r = g > r ? g : r;
+    }
+    margin = zl_floor_shift64(((gx < 0 ? -gx : gx) + (gy < 0 ? -gy : gy)) >> (ZL_ATTR_FRAC - 16), 0) * (int64_t)r;
+    margin = (margin >> (ZL_SUB_BITS + ZL_FINE_BITS)) + slack;
+    lo = (int64_t)(v[0].z < v[1].z ? v[0].z : v[1].z);
+    lo = (int64_t)v[2].z < lo ? (int64_t)v[2].z : lo;
+    hi = (int64_t)(v[0].z > v[1].z ? v[0].z : v[1].z);
+    hi = (int64_t)v[2].z > hi ? (int64_t)v[2].z : hi;
+    lo -= margin;
+    hi += margin;
+    if ((lo < 0 || hi > top) && margin >= ((int64_t)1 << 14))
+        return 0;
+    *zlo = (uint32_t)clamp64(lo, 0, top);
+    *zhi = (uint32_t)clamp64(hi, 0, top);
+    return 1;
+}
+
 static void sort3(const zl_wvert **v)
 {
     const zl_wvert *t;
@@ -160,6 +283,47 @@ static void sort3(const zl_wvert **v)
         v[0] = v[1];
         v[1] = t;
     }
+}
+
+/* zl_depth_plane_exact of the sorted window vertices v (res: the residuals
+ * of a, b, c, 6 values) into t. */
+static int depth_plane_wvert(zl_active *t, const zl_wvert *const *v, const zl_wvert *a, const zl_wvert *b,
+                             const int16_t *res, const plane_frame *pf)
+{
+    zl_fine_vert f[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        unsigned i = v[k] == a ? 0u : (v[k] == b ? 2u : 4u);
+        f[k].x = v[k]->x;
+        f[k].y = v[k]->y;
+        f[k].fx = res[i];
+        f[k].fy = res[i + 1];
+        f[k].z = v[k]->z;
+    }
+    return zl_depth_plane_exact(&t->z, &t->zlo, &t->zhi, f, pf->ax, pf->ay, pf->first);
+}
+
+/* The residuals of a, b, c (6 values into res) when they are the vertices
+ * of poly, an unclipped triangle; else 0 (the snapped plane). */
+static int poly_residuals(const zl_poly *poly, const zl_wvert *a, const zl_wvert *b, const zl_wvert *c, int16_t *res)
+{
+    const zl_wvert *v[3];
+    int k;
+    if (poly == NULL || poly->clipped || poly->n != 3)
+        return 0;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    for (k = 0; k < 3; k++) {
+        unsigned i = v[k] == &poly->v[0] ? 0u : (v[k] == &poly->v[1] ? 1u : (v[k] == &poly->v[2] ? 2u : 3u));
+        if (i > 2u)
+            return 0;
+        if (poly->fx[i] == ZL_FINE_NONE)
+            return 0;
+        res[2 * k] = poly->fx[i];
+        res[2 * k + 1] = poly->fy[i];
+    }
+    return 1;
 }
 
 int zl_tri_setup(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b,
@@ -237,6 +401,15 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
                        const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const zl_state *st, int32_t first,
                        int32_t end)
 {
+    int16_t res[6];
+    zl_tri_setup_rows_res(t, g, tp, sty, a, b, c, poly, poly_residuals(poly, a, b, c, res) ? res : NULL, st, first,
+                          end);
+}
+
+void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
+                           const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const int16_t *res,
+                           const zl_state *st, int32_t first, int32_t end)
+{
     const zl_wvert *v[3];
     int32_t mid;
     int64_t cross;
@@ -296,16 +469,18 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
     pf.oy = (int64_t)pf.ay * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->y;
     pf.first = first;
     t->ax = pf.ax;
-    plane_setup(&t->z, &pf, v[0]->z, v[1]->z, v[2]->z);
-    t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
-    t->zlo = v[0]->z;
-    t->zhi = v[0]->z;
-    for (k = 1; k < 3; k++) {
-        if (v[k]->z < t->zlo)
-            t->zlo = v[k]->z;
-        if (v[k]->z > t->zhi)
-            t->zhi = v[k]->z;
+    if (res == NULL || !depth_plane_wvert(t, v, a, b, res, &pf)) {
+        plane_setup(&t->z, &pf, v[0]->z, v[1]->z, v[2]->z);
+        t->zlo = v[0]->z;
+        t->zhi = v[0]->z;
+        for (k = 1; k < 3; k++) {
+            if (v[k]->z < t->zlo)
+                t->zlo = v[k]->z;
+            if (v[k]->z > t->zhi)
+                t->zhi = v[k]->z;
+        }
     }
+    t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
     if (poly != NULL) { /* NULL: the caller sets the colour and light itself */
         t->rgb[0] = poly->flat.r;
         t->rgb[1] = poly->flat.g;
@@ -333,6 +508,36 @@ static int64_t plane_at(const zl_attr *p, int32_t ax, int32_t ay, int32_t x, int
     int64_t v = p->row + zl_floor_shift64(ox, ZL_SUB_BITS) * p->dx + zl_floor_shift64(oy, ZL_SUB_BITS) * p->dy;
     v += zl_floor_shift64((ox & (ZL_SUB_ONE - 1)) * p->dx + (oy & (ZL_SUB_ONE - 1)) * p->dy, ZL_SUB_BITS);
     return zl_floor_shift64(v, ZL_ATTR_FRAC - 16);
+}
+
+int zl_tri_exact_depths3(const zl_poly *poly, const zl_wvert *a, const zl_wvert *b, const zl_wvert *c,
+                         const int32_t x[3], const int32_t y[3], int64_t z[3])
+{
+    const zl_wvert *v[3];
+    zl_fine_vert f[3];
+    int16_t res[6];
+    zl_attr p;
+    uint32_t lo, hi;
+    int k;
+    if (!poly_residuals(poly, a, b, c, res))
+        return 0;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    sort3(v); /* the set-up's order, so its rounding */
+    for (k = 0; k < 3; k++) {
+        unsigned i = v[k] == a ? 0u : (v[k] == b ? 2u : 4u);
+        f[k].x = v[k]->x;
+        f[k].y = v[k]->y;
+        f[k].fx = res[i];
+        f[k].fy = res[i + 1];
+        f[k].z = v[k]->z;
+    }
+    if (!zl_depth_plane_exact(&p, &lo, &hi, f, 0, 0, 0))
+        return 0;
+    for (k = 0; k < 3; k++)
+        z[k] = plane_at(&p, 0, 0, x[k], y[k]);
+    return 1;
 }
 
 void zl_tri_set_planes(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_wvert *b, const zl_wvert *c,

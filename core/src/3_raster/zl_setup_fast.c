@@ -80,6 +80,25 @@ static ZL_ALWAYS_INLINE int32_t small_frame_anchor(small_frame *f, const zl_cach
     return ax;
 }
 
+/* zl_depth_plane_exact of three sorted cached vertices, anchored at column
+ * ax of v[0]'s row. Out of line: the set-ups without the exact mapping do
+ * not carry its frame (+19 instructions a triangle on the Cortex-M4 bunny
+ * in line). */
+static ZL_NOINLINE int cached_depth_plane(zl_attr *z, uint32_t *zlo, uint32_t *zhi, const zl_cached_vertex *const *v, int32_t ax,
+                              int32_t first)
+{
+    zl_fine_vert f[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        f[k].x = v[k]->x;
+        f[k].y = v[k]->y;
+        f[k].fx = ZL_CV_FX(v[k]);
+        f[k].fy = ZL_CV_FY(v[k]);
+        f[k].z = v[k]->z;
+    }
+    return zl_depth_plane_exact(z, zlo, zhi, f, ax, zl_floor_shift32(v[0]->y, ZL_SUB_BITS), first);
+}
+
 /* zl_tri_setup_flat's triangle by the general setup (zl_tri_classify and
  * zl_tri_setup_rows on window vertices), for numbers beyond 32 bits. Out of
  * line, so the common case does not carry its frame. */
@@ -87,19 +106,24 @@ static ZL_NOINLINE int setup_flat_general(zl_active *t, const zl_cached_vertex *
                                           uint16_t width, uint16_t height)
 {
     zl_wvert w[3];
+    int16_t res[6];
     int32_t first, end;
     unsigned k;
+    int exact;
     for (k = 0; k < 3; k++) {
         w[k].x = c[k]->x;
         w[k].y = c[k]->y;
         w[k].z = c[k]->z;
+        res[2 * k] = ZL_CV_FX(c[k]);
+        res[2 * k + 1] = ZL_CV_FY(c[k]);
         w[k].r = 0; /* vertex colours only matter to Gouraud shading */
         w[k].g = 0;
         w[k].b = 0;
     }
+    exact = ZL_CV_FX(c[0]) != ZL_FINE_NONE;
     if (!zl_tri_classify(&w[0], &w[1], &w[2], st, width, height, &first, &end))
         return 0;
-    zl_tri_setup_rows(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, st, first, end);
+    zl_tri_setup_rows_res(t, NULL, NULL, NULL, &w[0], &w[1], &w[2], NULL, exact ? res : NULL, st, first, end);
     return 1;
 }
 
@@ -112,7 +136,7 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
                          const zl_cached_vertex *c, uint16_t width, uint16_t height)
 {
     const zl_cached_vertex *v[3], *v0, *v1, *v2;
-    int32_t first, end, mid, ax, d1, d2;
+    int32_t first, end, mid, ax;
     int64_t cross;
     small_frame f;
     zl_edge upper;
@@ -130,12 +154,23 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
     f.dx2 = v2->x - v0->x;
     f.dy2 = v2->y - v0->y;
     cross = (int64_t)f.dx1 * f.dy2 - (int64_t)f.dx2 * f.dy1;
-    if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
-        !depth_diff32(v2->z, v0->z, &d2))
-        return -1;
-    ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
-    if (!plane_small(&t->z, &f, v0->z, d1, d2))
-        return -1;
+    if (ZL_CV_FX(v0) == ZL_FINE_NONE) { /* no exact mapping: the plane through the snapped vertices */
+        int32_t d1, d2;
+        if (cross < -(int64_t)UINT32_MAX || cross > (int64_t)UINT32_MAX || !depth_diff32(v1->z, v0->z, &d1) ||
+            !depth_diff32(v2->z, v0->z, &d2))
+            return -1;
+        ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
+        if (!plane_small(&t->z, &f, v0->z, d1, d2))
+            return -1;
+        t->zlo = v0->z < v1->z ? v0->z : v1->z;
+        t->zlo = v2->z < t->zlo ? v2->z : t->zlo;
+        t->zhi = v0->z > v1->z ? v0->z : v1->z;
+        t->zhi = v2->z > t->zhi ? v2->z : t->zhi;
+    } else {
+        ax = zl_floor_shift32(v0->x, ZL_SUB_BITS);
+        if (!cached_depth_plane(&t->z, &t->zlo, &t->zhi, v, ax, first))
+            return -1;
+    }
     t->kind = ZL_KIND_TRI;
     t->row = (int16_t)first;
     t->mid = (int16_t)mid;
@@ -154,10 +189,6 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
         t->left = upper;
     t->ax = ax;
     t->dz14 = step32(t->z.dx, ZL_ATTR_FRAC - 14);
-    t->zlo = v0->z < v1->z ? v0->z : v1->z;
-    t->zlo = v2->z < t->zlo ? v2->z : t->zlo;
-    t->zhi = v0->z > v1->z ? v0->z : v1->z;
-    t->zhi = v2->z > t->zhi ? v2->z : t->zhi;
     return 1;
 }
 
@@ -248,7 +279,7 @@ static ZL_ALWAYS_INLINE void frame_out(small_frame *out, const small_frame *f)
  * local: through a pointer GCC -Os keeps it in memory (+2 % on the flat
  * bunny, +3 % on tris, Cortex-M4 and rv32). */
 static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v, uint16_t height,
-                                         small_frame *fout)
+                                         small_frame *fout, int exact)
 {
     const zl_cached_vertex *v0, *v1, *v2;
     int32_t first, end, mid, ax, d1, d2, cross;
@@ -284,7 +315,8 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
         tiny_edge_init(&tt->low, v1->x, v1->y, v2->x, v2->y, mid);
     cross = f.dx1 * f.dy2 - f.dx2 * f.dy1;
     ax = small_frame_anchor(&f, v0, first, cross, (d1 | d2) != 0);
-    if (!plane_small(&z, &f, v0->z, d1, d2))
+    if (!exact ? !plane_small(&z, &f, v0->z, d1, d2)
+               : !cached_depth_plane(&z, &zlo, &zhi, v, ax, first) || zhi - zlo >= (UINT32_C(1) << 25))
         return -1;
     tiny_depth(tt, &z, zlo, zhi);
     tt->ax = ax;
@@ -308,7 +340,10 @@ static ZL_ALWAYS_INLINE int tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, c
     v[0] = a;
     v[1] = b;
     v[2] = c;
-    return tiny_setup_v(tt, v, height, NULL);
+    /* one instance a depth mapping: the snapped plane's is the set-up of before issue 22 */
+    if (ZL_CV_FX(a) == ZL_FINE_NONE)
+        return tiny_setup_v(tt, v, height, NULL, 0);
+    return tiny_setup_v(tt, v, height, NULL, 1);
 }
 
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
@@ -418,7 +453,7 @@ static ZL_ALWAYS_INLINE int tiny_gouraud_setup(zl_tiny *tt, zl_tiny_colour *tc, 
     /* read only when set (|cross| >= 2^16), which GCC cannot follow here */
     f.inv.d = f.inv.v = 0;
     f.inv.shift = 0;
-    set = tiny_setup_v(tt, s, height, &f);
+    set = tiny_setup_v(tt, s, height, &f, ZL_CV_FX(s[0]) != ZL_FINE_NONE);
     if (set <= 0)
         return set;
     for (k = 0; k < 3; k++) /* the colours in the sorted order */
@@ -491,7 +526,8 @@ int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cache
 {
     zl_tiny tt; /* in line: its fields go straight to the record */
     int set;
-    tt.low.n = tt.low.inc = tt.low.d = 0; /* set below when it has rows: GCC cannot tell */
+    tt.low.n = tt.low.inc = tt.low.d = 0; /* set below when they have rows: GCC cannot tell */
+    tt.up.n = tt.up.inc = tt.up.d = 0;
     set = tiny_setup(&tt, a, b, c, width, height);
     if (set <= 0)
         return set;

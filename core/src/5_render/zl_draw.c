@@ -6,8 +6,9 @@
 #include "../1_base/zl_internal.h"
 #include "../3_raster/zl_span.h"
 
-/* ZL_VERTEX_CACHE_BYTES promises 8 bytes per cached vertex. */
-typedef char zl_cache_entry_is_8_bytes[(sizeof(zl_cached_vertex) == 8) ? 1 : -1];
+/* ZL_VERTEX_CACHE_BYTES and ZL_DRAW_CACHE_BYTES promise 12 bytes per cached
+ * vertex, 8 without ZL_FEATURE_EXACT_DEPTH. */
+typedef char zl_cache_entry_size[(sizeof(zl_cached_vertex) == ZL_VERTEX_CACHE_ENTRY) ? 1 : -1];
 /* The draw cache starts with a zl_vx (8-byte aligned: int64_t), the slots
  * after it stay 8-byte aligned. */
 typedef char zl_draw_setup_fits[(sizeof(zl_vx) <= ZL_DRAW_CACHE_SETUP_BYTES) ? 1 : -1];

@@ -122,6 +122,29 @@ static ZL_NOINLINE void wide_depths(zl_vis_rtri *r, const zl_source *src, uint32
     r->wide = 1;
 }
 
+/* An unclipped triangle casts against the depth plane the z-buffer gives
+ * it (through its unsnapped vertices, zl_tri_exact_depths3): its values at
+ * the snapped vertices, wide as wide_depths makes them. */
+static ZL_NOINLINE void exact_depths(zl_vis_rtri *r, const zl_poly *poly, const zl_wvert *a, const zl_wvert *b,
+                                     const zl_wvert *c)
+{
+    int32_t x[3], y[3];
+    int64_t z[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        x[k] = (int32_t)(r->x[k] / 2);
+        y[k] = (int32_t)(r->y[k] / 2);
+    }
+    if (!zl_tri_exact_depths3(poly, a, b, c, x, y, z))
+        return;
+    for (k = 0; k < 3; k++)
+        if (z[k] < -((int64_t)1 << 39) || z[k] >= ((int64_t)1 << 39))
+            return;
+    for (k = 0; k < 3; k++)
+        r->z[k] = (uint32_t)(zl_floor_shift64(z[k], 8) + ((int64_t)1 << 31));
+    r->wide = 1;
+}
+
 int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user)
 {
     zl_vis_rtri *pool = (zl_vis_rtri *)v->pool;
@@ -167,6 +190,8 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
                     continue;
                 if (poly.clipped)
                     wide_depths(r, &src, t);
+                else if (poly.n == 3 && poly.fx[0] != ZL_FINE_NONE) /* the exact mapping's plane */
+                    exact_depths(r, &poly, &poly.v[0], &poly.v[k], &poly.v[k + 1]);
                 r->id = v->visible[b];
                 r->rgb[0] = poly.flat.r;
                 r->rgb[1] = poly.flat.g;

@@ -36,7 +36,7 @@
 
 static uint16_t color_buf[W * H];
 static uint16_t depth_buf[W * H];
-static uint32_t vcache_buf[2 * 2048];
+static uint32_t vcache_buf[3 * 2048]; /* ZL_VERTEX_CACHE_BYTES: 12 bytes a vertex */
 static uint64_t work[96 * 1024 / 8];
 
 static uint32_t fnv1a(const void *p, size_t n, uint32_t h)

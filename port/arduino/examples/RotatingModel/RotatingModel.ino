@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // zline RotatingModel: a lit cube turning on a 240x240 ST7789 (or in the
 // middle of a 320x240 ILI9341), rendered one row at a time: zline needs a
-// 3,144-byte work buffer and no frame buffer, so it runs on an Arduino Mega
+// 3,176-byte work buffer and no frame buffer, so it runs on an Arduino Mega
 // 2560 (8 KB of RAM) as well as on 32-bit boards.
 //
 // Wiring (Mega 2560; on other boards use their SPI pins): SCK 52, MOSI 51,

@@ -29,7 +29,7 @@ extern "C" {
 /* zline's work buffer for this scene, in 8-byte words: at least
  * zl_frame_bytes() of rotating_scene_config's configuration (the render
  * call checks it and returns ZL_ERR_ARG if not). */
-#define ROTATING_SCENE_WORK_WORDS 393u
+#define ROTATING_SCENE_WORK_WORDS 397u
 /* zl_frame_begin wants the work buffer 8-byte aligned (ZL_ERR_ARG
  * otherwise). uint64_t alone does not ensure it: on AVR its alignment is
  * 1 byte. Declare the buffer as
