@@ -25,7 +25,7 @@ for tool in arm-none-eabi-gcc riscv64-unknown-elf-gcc avr-gcc; do
     command -v $tool >/dev/null || { echo "config-size.sh: $tool not found" >&2; exit 2; }
 done
 srcs=$(find "$root/core/src" -name '*.c' | sort)
-minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0"
+minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0"
 
 # flash PREFIX LD-EMULATION FLAGS... : .text + .rodata bytes the probe keeps of
 # the core (LD-EMULATION: ld's -m, or - for its default)
