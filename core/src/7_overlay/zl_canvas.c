@@ -197,6 +197,8 @@ zl_status zl_canvas_image(const zl_canvas *c, int16_t x, int16_t y, const zl_tex
     x1 = clamp32((int32_t)x + image->width, 0, (int32_t)c->width);
     y0 = clamp32(y, top, top + (int32_t)c->rows);
     y1 = clamp32((int32_t)y + image->height, top, top + (int32_t)c->rows);
+    if (x0 >= x1 || y0 >= y1)
+        return ZL_OK; /* nothing inside: (x0 - x) may be negative, no pointer may be formed from it */
     for (row = y0; row < y1; row++) {
         const uint16_t *src = image->texels + (size_t)(row - y) * image->stride + (size_t)(x0 - x);
         uint8_t *p = pixel_at(c, x0, row - top, bpp);
