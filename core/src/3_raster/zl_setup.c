@@ -175,9 +175,12 @@ static int64_t scaled_quotient(int64_t g, const zl_div_inv *inv, uint32_t c32, i
     if (m == 0)
         return 0;
     if (k >= 0) {
+        int whole; /* the shift reaches k: the rounding half c32 / 2 goes in */
         t = 62 - (int)bits64(m);
-        t = t < k ? t : k;
-        q = zl_div_inv_q(inv, (m << t) + (t == k ? c32 / 2u : 0u));
+        whole = t >= k;
+        if (whole)
+            t = k;
+        q = zl_div_inv_q(inv, (m << t) + (whole ? c32 / 2u : 0u));
         if (k - t >= 43 || (q >> (43 - (k - t))) != 0)
             q = (uint64_t)ZL_GRAD_LIMIT;
         else

@@ -98,6 +98,8 @@ static ZL_ALWAYS_INLINE void span_blend565(uint32_t leq, unsigned mode, int zwri
     int32_t i;
     /* the texture's fields in locals: the loop's stores cannot change them */
     const uint16_t *rtx = rp->texels;
+    if (kind == ZL_BLEND_TEXTURE && tex == NULL)
+        return; /* cannot happen (the caller chose the kind from tex): for the analyser */
     const uint32_t rum = rp->umask, rvm = rp->vmask;
     const unsigned fmt = tex != NULL ? tex->format : 0u;
     uint8_t alpha_of[16]; /* div255(alpha 17 t) of each RGBA4444 texel alpha t */
