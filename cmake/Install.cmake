@@ -27,6 +27,8 @@ set(ZLINE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/zline CACHE STRING
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/zline
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT core
         FILES_MATCHING PATTERN "*.h")
+install(FILES ${PROJECT_SOURCE_DIR}/port/fpu/include/zline/zl_float.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/zline COMPONENT core)
 # The configuration the library was built with (core/CMakeLists.txt, ZLINE_CONFIG).
 install(FILES ${ZLINE_BUILD_CONFIG_DIR}/zline/zl_build_config.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/zline COMPONENT core)

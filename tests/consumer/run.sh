@@ -112,9 +112,9 @@ run_elf() { # run_elf ELF BOARD: the program's exit status is the result
 # --- the cases ----------------------------------------------------------------
 headers() { # headers CC FLAGS LANG-SUFFIX
     need "$1"
-    for h in "$root"/core/include/zline/*.h; do
+    for h in "$root"/core/include/zline/*.h "$root"/port/fpu/include/zline/*.h; do
         printf '#include "zline/%s"\ntypedef int consumer_not_empty;\n' "$(basename "$h")" >"$out/hdr.$3"
-        "$1" $2 -I"$root/core/include" -fsyntax-only "$out/hdr.$3" || fail "$(basename "$h") with $1 $2"
+        "$1" $2 -I"$root/core/include" -I"$root/port/fpu/include" -fsyntax-only "$out/hdr.$3" || fail "$(basename "$h") with $1 $2"
     done
     printf '#include "zline/zline.h"\n#include "zline/zl_visibility.h"\nint main(void) { return ZL_VERSION_MAJOR; }\n' >"$out/hdr.$3"
     "$1" $2 -I"$root/core/include" -fsyntax-only "$out/hdr.$3" || fail "all headers with $1"
@@ -167,7 +167,7 @@ install_tree() {
         -DZLINE_BUILD_BENCHMARKS=OFF -DZLINE_BUILD_PORTS=ON &&
         cmake --build "$b" -j "$jobs" && cmake --install "$b" --prefix "$prefix" || fail "build and install"
     (cd "$prefix" && find . -type f | sort) | tee "$out/installed.txt"
-    for f in include/zline/zline.h include/zline/zl_version.h lib/libzline.a lib/cmake/zline/zlineConfig.cmake \
+    for f in include/zline/zline.h include/zline/zl_version.h include/zline/zl_float.h lib/libzline.a lib/cmake/zline/zlineConfig.cmake \
         lib/cmake/zline/zlineConfigVersion.cmake lib/cmake/zline/zlineTargets.cmake lib/pkgconfig/zline.pc \
         lib/libzline_host.a include/zline/host/zl_obj.h lib/pkgconfig/zline-host.pc \
         lib/libzline_panel.a include/zline/panel/zl_spi_panel.h include/zline/panel/zl_grey4.h \

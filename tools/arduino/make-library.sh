@@ -30,7 +30,7 @@ rm -rf "$lib"
 mkdir -p "$lib/src/zline" "$lib/src/zline_core" "$lib/examples"
 cp "$top/library.properties" "$top/library.json" "$top/LICENSE" "$lib/"
 cp "$top/docs/ARDUINO.md" "$lib/README.md"
-cp "$top"/core/include/zline/*.h "$lib/src/zline/"
+cp "$top"/core/include/zline/*.h "$top"/port/fpu/include/zline/*.h "$lib/src/zline/"
 (cd "$top/core/src" && find . -name '*.[ch]' | while IFS= read -r f; do
     mkdir -p "$lib/src/zline_core/$(dirname "$f")"
     cp "$f" "$lib/src/zline_core/$f"

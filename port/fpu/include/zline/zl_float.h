@@ -22,7 +22,7 @@
 #ifndef ZL_FLOAT_H
 #define ZL_FLOAT_H
 
-#include "zline.h"
+#include "zline/zline.h"
 
 #ifdef __cplusplus
 extern "C" {
