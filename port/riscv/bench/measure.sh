@@ -6,15 +6,28 @@
 # qemu-system-riscv32 (virt, -icount shift=0: exact instruction counts) and
 # prints markdown tables: instructions per frame, flash and RAM.
 #
-#   port/riscv/bench/measure.sh [--update-budgets] [ARCH [BUILD_DIR]]
+#   port/riscv/bench/measure.sh [--update-budgets [--allow-raise REASON]] [ARCH [BUILD_DIR]]
 #
 # ARCH rv32imac (default) or rv32imc; BUILD_DIR defaults to
-# build/ARCH-bench. --update-budgets writes budgets-ARCH.txt from this
-# measurement (+3 %, rounded up to 1000: the BUDGET_SUGGEST lines).
+# build/ARCH-bench. --update-budgets rewrites budgets-ARCH.txt from this
+# measurement (+3 %, rounded up to 1000: the BUDGET_SUGGEST lines) by the
+# Cortex-M rule (port/cortex-m/bench/update-budgets.sh): it only lowers, a
+# budget that would rise is kept with a warning unless --allow-raise REASON
+# is given, and every comment line (the "# raised from OLD: REASON" lines)
+# stays above its budget line.
 set -eu
 cd "$(dirname "$0")/../../.."
 update=0
-if [ "${1:-}" = --update-budgets ]; then update=1; shift; fi
+raise_reason=
+if [ "${1:-}" = --update-budgets ]; then
+    update=1
+    shift
+    if [ "${1:-}" = --allow-raise ]; then
+        [ -n "${2:-}" ] || { echo "measure.sh: --allow-raise needs a REASON" >&2; exit 2; }
+        raise_reason=$2
+        shift 2
+    fi
+fi
 arch=${1:-rv32imac}
 build=${2:-build/$arch-bench}
 bench=$build/port/riscv/bench
@@ -51,23 +64,17 @@ done
 [ $status -eq 0 ] || echo "measure.sh: a benchmark reported a failure (BUDGET FAIL?): see $out/*.txt" >&2
 
 if [ $update -eq 1 ]; then
-    { echo "# Instruction budgets of the $arch benchmarks (port/cortex-m/bench/bench.c built by"
-      echo "# port/riscv/bench), checked by the CTest tests bench_*_budgets of a ZLINE_RISCV_ARCH=$arch"
-      echo "# cross build: a scene whose frame takes more instructions than its budget fails CI."
-      echo "#   tag (mode-optimisation) scene budget (instructions per frame, minstret under -icount, exact)"
-      echo "# Written by \`port/riscv/bench/measure.sh --update-budgets $arch\` (the measurement + 3 %,"
-      echo "# rounded up to 1000)."
-      echo "# It only lowers a budget (as port/cortex-m/bench/measure.sh): a suggestion above"
-      echo "# the current budget keeps the current one and is reported; raise by hand, with"
-      echo "# a \"# raised from OLD: REASON\" line above the raised line."
-      cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort |
-          awk -v old="$budgets" 'BEGIN { while ((getline l < old) > 0) { split(l, f, " ");
-                  if (l !~ /^#/ && f[3] != "") cur[f[1] " " f[2]] = f[3] } }
-              { k = $1 " " $2
-                if ((k in cur) && $3 + 0 > cur[k] + 0) {
-                    print "measure.sh: " k ": suggested " $3 " is above the budget " cur[k] ", which stays" > "/dev/stderr"
-                    $3 = cur[k] }
-                print }'; } >"$out/budgets.txt"
+    cat "$out"/*.txt | awk '$1 == "BUDGET_SUGGEST" { print $2, $3, $4 }' | sort >"$out/suggest.txt"
+    if ! grep -q '^# Instruction budgets' "$budgets"; then # a first measurement: the header
+        { echo "# Instruction budgets of the $arch benchmarks (port/cortex-m/bench/bench.c built by"
+          echo "# port/riscv/bench), checked by the CTest tests bench_*_budgets of a ZLINE_RISCV_ARCH=$arch"
+          echo "# cross build: a scene whose frame takes more instructions than its budget fails CI."
+          echo "#   tag (mode-optimisation) scene budget (instructions per frame, minstret under -icount, exact)"
+          echo "# Written by \`port/riscv/bench/measure.sh --update-budgets $arch\` (the measurement + 3 %,"
+          echo "# rounded up to 1000). It only lowers a budget; --allow-raise REASON raises one with a"
+          echo "# \"# raised from OLD: REASON\" line above it."; } >"$budgets"
+    fi
+    sh port/cortex-m/bench/update-budgets.sh "$budgets" "$out/suggest.txt" "$raise_reason" >"$out/budgets.txt"
     cp "$out/budgets.txt" "$budgets"
     echo "measure.sh: $budgets updated" >&2
 fi
