@@ -12,7 +12,10 @@
 #
 # Configurations: all-on (zl_config.h's defaults) and minimal (every
 # ZL_FEATURE_* 0: RGB565 or any format, flat and Gouraud, every depth
-# function, frame and scanline modes). Targets: Cortex-M0+, Cortex-M4
+# function, frame and scanline modes); on Cortex-M0+ also minimal-small, the
+# minimal one without the speed-for-size paths (ZL_SMALL_TRIANGLE_SETUP=0,
+# ZL_FAST_SPANS=0, ZL_DRAW_CACHE_SLOTS=0: the same pixels, slower; on the
+# ATmega2560 the first two are already 0, where int has 16 bits). Targets: Cortex-M0+, Cortex-M4
 # (arm-none-eabi-gcc), rv32imc (riscv64-unknown-elf-gcc with picolibc's
 # headers), ATmega2560 (avr-gcc), each at -Os and -O2.
 #
@@ -26,6 +29,7 @@ for tool in arm-none-eabi-gcc riscv64-unknown-elf-gcc avr-gcc; do
 done
 srcs=$(find "$root/core/src" -name '*.c' | sort)
 minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0"
+small="-DZL_SMALL_TRIANGLE_SETUP=0 -DZL_FAST_SPANS=0 -DZL_DRAW_CACHE_SLOTS=0"
 
 # flash PREFIX LD-EMULATION FLAGS... : .text + .rodata bytes the probe keeps of
 # the core (LD-EMULATION: ld's -m, or - for its default)
@@ -72,9 +76,14 @@ kb() { awk -v b="$1" 'BEGIN { printf "%.1f", b / 1024 }'; }
 echo "| configuration | target | -Os (bytes) | -Os (KB) | -O2 (bytes) | -O2 (KB) |"
 echo "|---|---|---:|---:|---:|---:|"
 while read -r name prefix emulation flags; do
-    for config in all-on minimal; do
-        extra=
-        [ "$config" = minimal ] && extra=$minimal
+    configs="all-on minimal"
+    [ "$name" = Cortex-M0+ ] && configs="$configs minimal-small"
+    for config in $configs; do
+        case $config in
+        all-on) extra= ;;
+        minimal) extra=$minimal ;;
+        minimal-small) extra="$minimal $small" ;;
+        esac
         os=$(flash "$prefix" "$emulation" $flags -Os $extra)
         o2=$(flash "$prefix" "$emulation" $flags -O2 $extra)
         echo "| $config | $name | $os | $(kb "$os") | $o2 | $(kb "$o2") |"

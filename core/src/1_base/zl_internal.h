@@ -491,14 +491,20 @@ typedef struct {
     zl_tiny t;
     zl_tiny_colour c;
 } zl_tiny_gouraud;
+/* Draw a zl_tiny_gouraud_setup triangle: exactly the pixels the general
+ * path writes for it (row_span). */
+void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
+                          uint8_t *depth, int32_t depth_stride);
+/* The span [x0, x1) (clipped, x0 < x1) of a ZL_KIND_TINY_GOURAUD record on
+ * its current row: the pixels zl_tiny_gouraud_draw writes on that row. */
+void zl_tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss, int32_t x0,
+                          int32_t x1, uint8_t *crow, uint16_t *zrow);
+#if ZL_SMALL_TRIANGLE_SETUP
 /* zl_tiny_setup of cached vertices v[0..2] with vertex colours col[0..2]
  * (3 bytes each), and the colour planes zl_tri_setup_rows makes: same
  * returns. */
 int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v, const uint8_t *const *col,
                           uint16_t height);
-/* Draw it: exactly the pixels the general path writes for it (row_span). */
-void zl_tiny_gouraud_draw(const zl_tiny_gouraud *tg, const zl_span_state *ss, uint8_t *color, int32_t color_stride,
-                          uint8_t *depth, int32_t depth_stride);
 /* zl_tri_setup_flat's bounds and numbers as a zl_tiny: 1 set up, 0 not in
  * the target, -1 beyond 32 bits (use zl_tri_setup_flat). */
 int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
@@ -507,13 +513,39 @@ int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex
  * and its colour planes (same returns). */
 int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc, const zl_cached_vertex *const *v,
                                  const uint8_t *const *col, uint16_t height);
-/* The span [x0, x1) (clipped, x0 < x1) of a ZL_KIND_TINY_GOURAUD record on
- * its current row: the pixels zl_tiny_gouraud_draw writes on that row. */
-void zl_tiny_gouraud_span(const zl_active *a, const zl_tiny_colour *tc, const zl_span_state *ss, int32_t x0,
-                          int32_t x1, uint8_t *crow, uint16_t *zrow);
 /* zl_tiny_setup into a scanline record of kind ZL_KIND_TINY (same returns). */
 int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b, const zl_cached_vertex *c,
                          uint16_t width, uint16_t height);
+#else
+/* Compiled out (zl_config.h): each set-up answers -1, "take the general
+ * path", at compile time, so no small-triangle draw or record is reachable
+ * and section garbage collection drops them (the same pixels). */
+static ZL_ALWAYS_INLINE int zl_tiny_gouraud_setup(zl_tiny_gouraud *tg, const zl_cached_vertex *const *v,
+                                                  const uint8_t *const *col, uint16_t height)
+{
+    (void)tg, (void)v, (void)col, (void)height;
+    return -1;
+}
+static ZL_ALWAYS_INLINE int zl_tiny_setup(zl_tiny *tt, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                          const zl_cached_vertex *c, uint16_t width, uint16_t height)
+{
+    (void)tt, (void)a, (void)b, (void)c, (void)width, (void)height;
+    return -1;
+}
+static ZL_ALWAYS_INLINE int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc,
+                                                         const zl_cached_vertex *const *v, const uint8_t *const *col,
+                                                         uint16_t height)
+{
+    (void)r, (void)tc, (void)v, (void)col, (void)height;
+    return -1;
+}
+static ZL_ALWAYS_INLINE int zl_tiny_setup_record(zl_active *r, const zl_cached_vertex *a, const zl_cached_vertex *b,
+                                                 const zl_cached_vertex *c, uint16_t width, uint16_t height)
+{
+    (void)r, (void)a, (void)b, (void)c, (void)width, (void)height;
+    return -1;
+}
+#endif
 /* Whether zl_tiny_draw can write this target: RGB565, aligned rows, every
  * channel, depth LESS or LEQUAL with writes. */
 int zl_tiny_span_state(const zl_span_state *ss, const void *color, int32_t color_stride, const void *depth);

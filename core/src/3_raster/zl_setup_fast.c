@@ -218,6 +218,7 @@ int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_v
  * of two divisions and two products. For the small triangles of a real mesh
  * (a few rows each) that is the cheaper side of the trade.
  */
+#if ZL_SMALL_TRIANGLE_SETUP /* (zl_config.h; off, zl_internal.h's stubs send every triangle to the general set-up) */
 /* The edge from (xt, yt) down to (xb, yb) from row j0 on. The caller has
  * checked the triangle's bound (zl_tiny_setup), so N fits 32 bits. */
 static ZL_ALWAYS_INLINE void tiny_edge_init(zl_tiny_edge *e, int32_t xt, int32_t yt, int32_t xb, int32_t yb,
@@ -288,8 +289,6 @@ static ZL_ALWAYS_INLINE int tiny_setup_v(zl_tiny *tt, const zl_cached_vertex **v
     zl_attr z;
     if (!cached_rows(v, height, &first, &mid, &end))
         return 0;
-    if (!ZL_SMALL_TRIANGLE_SETUP) /* (zl_config.h) */
-        return -1;
     v0 = v[0];
     v1 = v[1];
     v2 = v[2];
@@ -550,3 +549,4 @@ int zl_tiny_gouraud_setup_record(zl_active *r, zl_tiny_colour *tc, const zl_cach
     tiny_record(r, &tt);
     return 1;
 }
+#endif /* ZL_SMALL_TRIANGLE_SETUP */

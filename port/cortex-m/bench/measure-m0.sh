@@ -32,8 +32,12 @@ out=$build/measure-m0
 budgets=port/cortex-m/bench/budgets-m0.txt
 mkdir -p "$out"
 
+# ZLINE_CONFIG (environment): the library's zl_config.h macros, as CMake's
+# ZLINE_CONFIG takes them (e.g. the flash table's minimal-small speed:
+# ZLINE_CONFIG="ZL_SMALL_TRIANGLE_SETUP=0;ZL_FAST_SPANS=0;ZL_DRAW_CACHE_SLOTS=0"
+# with a build folder of its own; the budgets are the default build's).
 cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake \
-    -DZLINE_CPU=cortex-m0 -DCMAKE_BUILD_TYPE=Release >/dev/null
+    -DZLINE_CPU=cortex-m0 -DCMAKE_BUILD_TYPE=Release "-DZLINE_CONFIG=${ZLINE_CONFIG:-}" >/dev/null
 cmake --build "$build" -j 2 --target bench_frame_O2 bench_scanline_O2 bench_features_O2 >/dev/null
 
 plugin=$out/m4timing.so
