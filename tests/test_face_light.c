@@ -146,7 +146,7 @@ static void test_one_light_equals_light_dir(void)
 }
 
 /* The FLAT LIGHTING equation in double precision, for one triangle. */
-static void reference(const zl_lighting *lt, const double rot[9], int cw, uint32_t t, double out[3])
+static void reference(const zl_lighting *lt, const double rot[9], double scale, int cw, uint32_t t, double out[3])
 {
     const zl_fixed *p0 = positions + indices[t * 3] * 3, *p1 = positions + indices[t * 3 + 1] * 3;
     const zl_fixed *p2 = positions + indices[t * 3 + 2] * 3;
@@ -174,6 +174,22 @@ static void reference(const zl_lighting *lt, const double rot[9], int cw, uint32
         for (k = 0; k < 3; k++) { /* model space: R^T (the scale does not turn a direction) */
             lm[k] = (rot[k] * l[0] + rot[3 + k] * l[1] + rot[6 + k] * l[2]) / ll;
             hm[k] = (rot[k] * h[0] + rot[3 + k] * h[1] + rot[6 + k] * h[2]) / lh;
+        }
+        if (li->point) { /* l = P - c, P = M^-1 q = R^T q / scale, c the centroid; h = unit(unit(l) + R^T v) */
+            double q[3] = {li->position.x / 65536.0, li->position.y / 65536.0, li->position.z / 65536.0};
+            for (k = 0; k < 3; k++)
+                lm[k] = (rot[k] * q[0] + rot[3 + k] * q[1] + rot[6 + k] * q[2]) / scale -
+                        ((double)p0[k] + p1[k] + p2[k]) / 3.0 / 65536.0;
+            ll = sqrt_d(lm[0] * lm[0] + lm[1] * lm[1] + lm[2] * lm[2]);
+            if (ll == 0)
+                continue;
+            for (k = 0; k < 3; k++) {
+                lm[k] /= ll;
+                hm[k] = lm[k] + (rot[k] * v[0] + rot[3 + k] * v[1] + rot[6 + k] * v[2]) / lv;
+            }
+            lh = sqrt_d(hm[0] * hm[0] + hm[1] * hm[1] + hm[2] * hm[2]);
+            for (k = 0; k < 3; k++)
+                hm[k] = lh > 0 ? hm[k] / lh : 0;
         }
         for (k = 0; k < 3; k++) {
             d += (cw ? -n[k] : n[k]) / len * lm[k];
@@ -223,6 +239,12 @@ static void test_many_lights_against_the_equation(void)
             lt.lights[i].specular.r = (uint8_t)(zt_rand(&rng) % 128);
             lt.lights[i].specular.g = (uint8_t)(zt_rand(&rng) % 128);
             lt.lights[i].specular.b = (uint8_t)(zt_rand(&rng) % 128);
+            if (zt_rand_range(&rng, 0, 2) == 0) { /* a point light, world space, within 6 units */
+                lt.lights[i].point = 1;
+                lt.lights[i].position.x = zt_rand_range(&rng, -ZL_FX_INT(6), ZL_FX_INT(6));
+                lt.lights[i].position.y = zt_rand_range(&rng, -ZL_FX_INT(6), ZL_FX_INT(6));
+                lt.lights[i].position.z = zt_rand_range(&rng, -ZL_FX_INT(6), ZL_FX_INT(6));
+            }
         }
         zl_mat4_rotate_y(&rot, (zl_angle)zt_rand_range(&rng, 0, ZL_ANGLE_TURN - 1));
         zl_mat4_rotate_x(&model, (zl_angle)zt_rand_range(&rng, 0, ZL_ANGLE_TURN - 1));
@@ -236,7 +258,7 @@ static void test_many_lights_against_the_equation(void)
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_light_faces(&lt, &model, &mesh, (uint8_t)cw, lit));
         for (t = 0; t < NT; t++) {
             double want[3];
-            reference(&lt, r, cw, t, want);
+            reference(&lt, r, s / 65536.0, cw, t, want);
             for (k = 0; k < 3; k++) {
                 double diff = lit[t * 3 + k] - want[k];
                 TEST_ASSERT_TRUE_MESSAGE(diff < 3.5 && diff > -3.5, "a face colour is off the FLAT LIGHTING equation");

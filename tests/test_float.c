@@ -121,6 +121,17 @@ static void test_lights(void)
     TEST_ASSERT_EQUAL_MEMORY(&l.dir, &lf.dir, sizeof l.dir); /* field by field: the struct has padding */
     TEST_ASSERT_EQUAL_MEMORY(&l.diffuse, &lf.diffuse, sizeof l.diffuse);
     TEST_ASSERT_EQUAL_MEMORY(&l.specular, &lf.specular, sizeof l.specular);
+    TEST_ASSERT_EQUAL_UINT8(0, l.point);
+    TEST_ASSERT_EQUAL_UINT8(0, lf.point);
+    {
+        static const double at[3] = {1.5, -2, 0.25};
+        zl_light p = zl_point_light_d(at, diffuse, specular);
+        TEST_ASSERT_EQUAL_UINT8(1, p.point);
+        TEST_ASSERT_EQUAL_INT64(ZL_FX_ONE * 3 / 2, p.position.x);
+        TEST_ASSERT_EQUAL_INT64(-ZL_FX_INT(2), p.position.y);
+        TEST_ASSERT_EQUAL_INT64(ZL_FX_ONE / 4, p.position.z);
+        TEST_ASSERT_EQUAL_UINT8(128, p.diffuse.g);
+    }
     zl_state_default(&st);
     zl_state_light_f(&st, 0, 0, -3, 0.25f);
     TEST_ASSERT_EQUAL_UINT8(1, st.light_on);

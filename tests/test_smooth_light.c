@@ -130,10 +130,10 @@ static double channel(const zl_rgb *c, int k)
 /* The exact colour of one vertex (before rounding, after the clamp at
  * 255); *ill set when a d_i is so close to 0 that the specular cut-off is
  * ill-conditioned (the test skips those). */
-static void model_color(const zl_lighting *lt, const zl_mat4 *model, const int16_t *n, const uint8_t *mat,
-                        double out[3], int *ill)
+static void model_color(const zl_lighting *lt, const zl_mat4 *model, const int16_t *n, const zl_fixed *pos,
+                        const uint8_t *mat, double out[3], int *ill)
 {
-    double m3[9], inv[9], nn[3], view[3];
+    double m3[9], inv[9], nn[3], view[3], vm[3];
     double d[ZL_MAX_LIGHTS], s[ZL_MAX_LIGHTS];
     unsigned i;
     int k, lit;
@@ -151,13 +151,26 @@ static void model_color(const zl_lighting *lt, const zl_mat4 *model, const int16
     *ill = 0;
     for (i = 0; i < lt->light_count; i++) {
         const zl_light *L = &lt->lights[i];
-        double l[3], lm[3], h[3], hm[3];
-        l[0] = L->dir.x;
-        l[1] = L->dir.y;
-        l[2] = L->dir.z;
-        unit(l);
-        mul3(inv, l, lm);
-        unit(lm);
+        double l[3] = {0, 0, 0}, lm[3], h[3], hm[3];
+        if (L->point) { /* P = M^-1 (q - t) in model space, lm = unit(P - pos) */
+            double q[3];
+            q[0] = L->position.x / 65536.0 - (model ? model->m[3] / 65536.0 : 0);
+            q[1] = L->position.y / 65536.0 - (model ? model->m[7] / 65536.0 : 0);
+            q[2] = L->position.z / 65536.0 - (model ? model->m[11] / 65536.0 : 0);
+            mul3(inv, q, lm);
+            for (k = 0; k < 3; k++)
+                lm[k] -= pos[k] / 65536.0;
+            if (dsqrt(lm[0] * lm[0] + lm[1] * lm[1] + lm[2] * lm[2]) < 1.0 / 64)
+                *ill = 1; /* at the light: its direction is ill-conditioned */
+            unit(lm);
+        } else {
+            l[0] = L->dir.x;
+            l[1] = L->dir.y;
+            l[2] = L->dir.z;
+            unit(l);
+            mul3(inv, l, lm);
+            unit(lm);
+        }
         d[i] = lit ? nn[0] * lm[0] + nn[1] * lm[1] + nn[2] * lm[2] : 0;
         if (dabs(d[i]) < 1e-6 && lit)
             *ill = 1;
@@ -166,12 +179,21 @@ static void model_color(const zl_lighting *lt, const zl_mat4 *model, const int16
         s[i] = 0;
         if (d[i] > 0 && (L->specular.r | L->specular.g | L->specular.b) != 0) {
             double x;
-            for (k = 0; k < 3; k++)
-                h[k] = l[k] + view[k];
-            if (!unit(h))
-                continue;
-            mul3(inv, h, hm);
-            unit(hm);
+            if (L->point) { /* in model space: unit(lm + unit(M^-1 v)) */
+                mul3(inv, view, vm);
+                unit(vm);
+                for (k = 0; k < 3; k++)
+                    hm[k] = lm[k] + vm[k];
+                if (!unit(hm))
+                    continue;
+            } else {
+                for (k = 0; k < 3; k++)
+                    h[k] = l[k] + view[k];
+                if (!unit(h))
+                    continue;
+                mul3(inv, h, hm);
+                unit(hm);
+            }
             x = nn[0] * hm[0] + nn[1] * hm[1] + nn[2] * hm[2];
             s[i] = ipow(x < 0 ? 0 : x, lt->shininess);
         }
@@ -308,6 +330,12 @@ static void test_matches_the_exact_equation(void)
         lt.viewer = rand_dir();
         for (i = 0; i < lt.light_count; i++) {
             lt.lights[i].dir = rand_dir();
+            if (rand_range(0, 2) == 0) { /* a point light, within 8 units */
+                lt.lights[i].point = 1;
+                lt.lights[i].position.x = rand_range(-8 * ZL_FX_ONE, 8 * ZL_FX_ONE);
+                lt.lights[i].position.y = rand_range(-8 * ZL_FX_ONE, 8 * ZL_FX_ONE);
+                lt.lights[i].position.z = rand_range(-8 * ZL_FX_ONE, 8 * ZL_FX_ONE);
+            }
             lt.lights[i].diffuse = rand_rgb();
             if (rand_range(0, 2) != 0)
                 lt.lights[i].specular = rand_rgb();
@@ -326,6 +354,8 @@ static void test_matches_the_exact_equation(void)
             vcolors[v] = (uint8_t)next_rand();
         for (v = 0; v < NV; v++)
             random_normal(&normals[v * 3]);
+        for (v = 0; v < NV * 3; v++) /* read by point lights only */
+            positions[v] = rand_range(-2 * ZL_FX_ONE, 2 * ZL_FX_ONE);
         memset(&mesh, 0, sizeof mesh);
         mesh.positions = positions;
         mesh.vertex_count = NV;
@@ -337,8 +367,8 @@ static void test_matches_the_exact_equation(void)
         for (v = 0; v < NV; v++) {
             double ref[3];
             int ill;
-            model_color(&lt, use_model ? &model : NULL, &normals[v * 3], with_colors ? &vcolors[v * 3] : NULL,
-                        ref, &ill);
+            model_color(&lt, use_model ? &model : NULL, &normals[v * 3], &positions[v * 3],
+                        with_colors ? &vcolors[v * 3] : NULL, ref, &ill);
             if (ill) {
                 skipped++;
                 continue;
@@ -424,6 +454,13 @@ static void test_errors_write_nothing(void)
     TEST_ASSERT_EQUAL_UINT8(7, c[0]);
     TEST_ASSERT_EQUAL_UINT8(7, c[1]);
     TEST_ASSERT_EQUAL_UINT8(7, c[2]);
+    /* a point light reads the positions: none is an argument error */
+    lt.lights[0].point = 1;
+    mesh.positions = NULL;
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_light_vertices(&lt, NULL, &mesh, n, c));
+    TEST_ASSERT_EQUAL_UINT8(7, c[0]);
+    mesh.positions = positions;
+    lt.lights[0].point = 0;
     /* a light straight behind the viewer: no half vector, no specular, no error */
     lt.lights[0].dir.z = -ZL_FX_ONE;
     n[2] = -16384;

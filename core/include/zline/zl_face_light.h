@@ -25,6 +25,14 @@
  * vector unit(unit(l) + unit(viewer)). A = ambient, D_i, S_i the light's
  * diffuse and specular colours, e = shininess.
  *
+ * A point light (zl_light.point, at q_i in the lights' space, no
+ * attenuation) instead has l_i = P_i - c per triangle, with P_i = M^-1 (q_i
+ * - t) its position in model space (t: the model matrix's translation;
+ * computed once per call) and c the triangle's centroid (l_i from 3 P_i -
+ * (p0 + p1 + p2), exact), made a Q16 unit vector and taken in Q14 as
+ * above; h_i = unit(unit(l_i) + V) with V = unit(M^-1 viewer). A centroid at
+ * the light gets nothing from it.
+ *
  * Equivalence: one light along the unit vector l with diffuse (255 - a) in
  * every channel, ambient (a, a, a), no specular and no model matrix (or one
  * that maps l exactly, such as quarter turns) gives exactly the colours of

@@ -368,7 +368,8 @@ zl_status zl_state_check(const zl_state *s);
  * SMOOTH LIGHTING (tests/test_smooth_light.c checks it against a
  * high-precision model of this equation). The OpenGL 1.x fixed-function
  * model with GL_COLOR_MATERIAL (ambient and diffuse), an infinite viewer and
- * directional lights, evaluated once per vertex by zl_light_vertices into a
+ * directional or point lights (point lights without attenuation: OpenGL's
+ * default constant 1), evaluated once per vertex by zl_light_vertices into a
  * caller array of lit colours, which a Gouraud draw then interpolates
  * (state.shading = ZL_SHADE_GOURAUD, state.light_on = 0, mesh.vertex_colors
  * = that array). Per vertex, with n its normal (model space, any non-zero
@@ -379,6 +380,7 @@ zl_status zl_state_check(const zl_state *s);
  *   d_i = max(0, n^ . L_i)
  *   s_i = d_i > 0 ? max(0, n^ . H_i)^e : 0          (0^0 = 1)
  *   L_i = unit(M^-1 l_i),  H_i = unit(M^-1 unit(unit(l_i) + unit(v)))
+ *   point light: L_i = unit(M^-1 (q_i - t) - p),  H_i = unit(L_i + unit(M^-1 v))
  *
  * n^ = n / |n| (a zero normal gets the ambient term only), A = ambient,
  * D_i, S_i the light's diffuse and specular colours (0..255, already
@@ -393,6 +395,10 @@ zl_status zl_state_check(const zl_state *s);
  * (a non-uniform scale then bends the lighting slightly; OpenGL's
  * difference). A half vector of zero (light straight behind the viewer)
  * gives no specular.
+ * A point light (zl_light.point) is at q_i in the lights' space: M^-1 (q_i -
+ * t), with t the model matrix's translation, is its position in model space
+ * (computed once per call), p the vertex position (so the mesh's positions
+ * are read); a vertex at the light gets no diffuse or specular from it.
  *
  * Bound: every channel is within 1 of the exact real value of c before
  * its rounding (the test measures the worst case); integer arithmetic only
@@ -403,9 +409,11 @@ zl_status zl_state_check(const zl_state *s);
 #define ZL_MAX_SHININESS 128
 
 typedef struct {
-    zl_vec3 dir;     /* towards the light, lights' space; non-zero, any length */
-    zl_rgb diffuse;  /* light diffuse x material diffuse, 0..255 each */
-    zl_rgb specular; /* light specular x material specular; 0,0,0: none */
+    zl_vec3 dir;      /* towards the light, lights' space; non-zero, any length (directional) */
+    zl_rgb diffuse;   /* light diffuse x material diffuse, 0..255 each */
+    zl_rgb specular;  /* light specular x material specular; 0,0,0: none */
+    uint8_t point;    /* 1: a point light at `position` (dir unused); 0: directional */
+    zl_vec3 position; /* a point light's position in the lights' space, Q16.16 */
 } zl_light;
 
 typedef struct {
@@ -428,9 +436,10 @@ void zl_lighting_default(zl_lighting *lt);
  * 3 int16 per vertex (model space; unit length as Q14, 16384 = 1.0, is the
  * convention, any non-zero length gives the same result). model: the
  * matrix from model space to the lights' space (its upper-left 3x3 is
- * used), NULL for the identity. Only positions' count and vertex_colors of
- * the mesh are read. ZL_ERR_ARG for a NULL pointer; ZL_ERR_RANGE for more
- * than ZL_MAX_LIGHTS lights, shininess above ZL_MAX_SHININESS, a zero light
+ * used), NULL for the identity. Only vertex_count and vertex_colors of the
+ * mesh are read, and its positions when a light is a point light.
+ * ZL_ERR_ARG for a NULL pointer (positions, with a point light); ZL_ERR_RANGE
+ * for more than ZL_MAX_LIGHTS lights, shininess above ZL_MAX_SHININESS, a zero light
  * direction (or viewer, with specular), or a singular matrix. Nothing is
  * written on an error.
  */

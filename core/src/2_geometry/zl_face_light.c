@@ -11,10 +11,13 @@
 #define UNIT_SQ ((int64_t)1 << 32)       /* |v|^2 of a Q16 unit vector */
 #define UNIT_TOLERANCE ((int64_t)1 << 19) /* 1/8192 of it: a rounded unit vector */
 
-/* Per-light numbers in model space, Q14 as the flat rule uses them. */
+/* Per-light numbers in model space, Q14 as the flat rule uses them (a
+ * point light's per face, from its model-space position p, Q16.16). */
 typedef struct {
     int32_t l[3], h[3];
     int spec;
+    int point;
+    int64_t p[3];
 } fl_light;
 
 static uint64_t mag(int64_t v)
@@ -125,7 +128,17 @@ static void to_q14(const int64_t *u, int32_t sign, int32_t *out)
     }
 }
 
-static int prepare(const zl_lighting *lt, const zl_mat4 *model, int32_t sign, fl_light *out)
+/* The viewer in model space as a Q16 unit vector; 0 when it is zero. */
+static int model_viewer(const zl_lighting *lt, const int64_t *cof, int64_t *vm)
+{
+    int64_t d[3];
+    d[0] = lt->viewer.x, d[1] = lt->viewer.y, d[2] = lt->viewer.z;
+    return to_model(cof, d, vm);
+}
+
+/* Every light's numbers; vm: the viewer in model space, for the half
+ * vectors of point lights. */
+static int prepare(const zl_lighting *lt, const zl_mat4 *model, int32_t sign, fl_light *out, int64_t *vm)
 {
     int64_t cof[9], view[3], u[3], l[3], h[3];
     const int64_t *c = NULL;
@@ -138,11 +151,19 @@ static int prepare(const zl_lighting *lt, const zl_mat4 *model, int32_t sign, fl
     for (i = 0; i < lt->light_count; i++) {
         const zl_light *li = &lt->lights[i];
         int64_t d[3];
+        out[i].point = li->point != 0;
+        out[i].spec = (li->specular.r | li->specular.g | li->specular.b) != 0;
+        if (out[i].point) { /* its vectors are per face (point_face) */
+            if (!zl_light_point_to_model(model, li->position, out[i].p))
+                return 0;
+            if (out[i].spec && !model_viewer(lt, c, vm))
+                return 0;
+            continue;
+        }
         d[0] = li->dir.x, d[1] = li->dir.y, d[2] = li->dir.z;
         if (!unit16(d, l) || !to_model(c, d, u))
             return 0;
         to_q14(u, sign, out[i].l);
-        out[i].spec = (li->specular.r | li->specular.g | li->specular.b) != 0;
         if (!out[i].spec)
             continue;
         d[0] = lt->viewer.x, d[1] = lt->viewer.y, d[2] = lt->viewer.z;
@@ -241,6 +262,31 @@ static void light_face(const zl_lighting *lt, const fl_light *fl, const int32_t 
     }
 }
 
+/* A point light's Q14 vectors for the triangle p0 p1 p2: l = P - c with c
+ * its centroid (computed as 3P - (p0 + p1 + p2), exact), and with specular
+ * h = unit(unit(l) + vm). A face whose centroid is at the light gets none. */
+static void point_face(const fl_light *pl, const int64_t *vm, int32_t sign, const zl_fixed *p0, const zl_fixed *p1,
+                       const zl_fixed *p2, fl_light *out)
+{
+    int64_t l[3], u[3];
+    unsigned k;
+    *out = *pl;
+    for (k = 0; k < 3; k++)
+        l[k] = 3 * pl->p[k] - ((int64_t)p0[k] + p1[k] + p2[k]); /* |P| <= 2^46 */
+    if (!unit16(l, u)) {
+        out->l[0] = out->l[1] = out->l[2] = 0; /* cos14 is then 0: no light */
+        return;
+    }
+    to_q14(u, sign, out->l);
+    if (!out->spec)
+        return;
+    for (k = 0; k < 3; k++)
+        l[k] = u[k] + vm[k];
+    out->spec = unit16(l, u);
+    if (out->spec)
+        to_q14(u, sign, out->h);
+}
+
 static int mesh_ok(const zl_mesh *mesh)
 {
     uint32_t i;
@@ -264,23 +310,39 @@ static int positions_ok(const zl_mesh *mesh)
 zl_status zl_light_faces(const zl_lighting *lt, const zl_mat4 *model, const zl_mesh *mesh, uint8_t front_face,
                          uint8_t *colors)
 {
-    fl_light fl[ZL_MAX_LIGHTS];
+    fl_light fl[ZL_MAX_LIGHTS], face[ZL_MAX_LIGHTS];
+    int64_t vm[3] = {0, 0, 0};
+    int32_t sign = front_face == ZL_FRONT_CW ? -1 : 1;
     uint32_t t;
+    unsigned i;
+    int points = 0;
     if (lt == NULL || mesh == NULL || colors == NULL || front_face > ZL_FRONT_CW || !mesh_ok(mesh))
         return ZL_ERR_ARG;
     if (lt->light_count > ZL_MAX_LIGHTS || lt->shininess > ZL_MAX_SHININESS || !positions_ok(mesh) ||
-        !prepare(lt, model, front_face == ZL_FRONT_CW ? -1 : 1, fl))
+        !prepare(lt, model, sign, fl, vm))
         return ZL_ERR_RANGE;
+    for (i = 0; i < lt->light_count; i++)
+        points |= fl[i].point;
     for (t = 0; t < mesh->triangle_count; t++) {
         const uint16_t *idx = mesh->indices + (size_t)t * 3u;
+        const zl_fixed *p0 = mesh->positions + (size_t)idx[0] * 3u, *p1 = mesh->positions + (size_t)idx[1] * 3u,
+                       *p2 = mesh->positions + (size_t)idx[2] * 3u;
         const uint8_t *fc = mesh->face_colors;
         zl_rgb mat = lt->material;
         int32_t m[3];
         if (fc != NULL)
             mat.r = fc[t * 3], mat.g = fc[t * 3 + 1], mat.b = fc[t * 3 + 2];
-        face_normal(mesh->positions + (size_t)idx[0] * 3u, mesh->positions + (size_t)idx[1] * 3u,
-                    mesh->positions + (size_t)idx[2] * 3u, m);
-        light_face(lt, fl, m, mat, colors + (size_t)t * 3u);
+        face_normal(p0, p1, p2, m);
+        if (!points) {
+            light_face(lt, fl, m, mat, colors + (size_t)t * 3u);
+            continue;
+        }
+        for (i = 0; i < lt->light_count; i++)
+            if (fl[i].point)
+                point_face(&fl[i], vm, sign, p0, p1, p2, &face[i]);
+            else
+                face[i] = fl[i];
+        light_face(lt, face, m, mat, colors + (size_t)t * 3u);
     }
     return ZL_OK;
 }

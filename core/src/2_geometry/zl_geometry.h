@@ -86,4 +86,13 @@ ZL_SHARED_STATIC int64_t plane_distance(const zl_source *s, unsigned plane, cons
     }
 }
 
+/* Lights given in world (or eye) space (zl_light_point.c). The model
+ * matrix's 3x3 A as A^-1 = inv / det 2^exp (det > 0; model NULL: the
+ * identity); 0 when A is singular. */
+int zl_light_inverse3(const zl_mat4 *model, int64_t inv[9], uint64_t *det, int *exp);
+/* A point light's position into model space, M^-1 (position - t) with t the
+ * model matrix's translation, in Q16.16 (int64, within +-2^46 raw); 0 when
+ * the 3x3 is singular. */
+int zl_light_point_to_model(const zl_mat4 *model, zl_vec3 position, int64_t out[3]);
+
 #endif /* ZL_GEOMETRY_H */

@@ -19,9 +19,11 @@
 
 /* Per-light numbers, prepared once per call. */
 typedef struct {
-    int32_t l[3], h[3];   /* model-space unit light and half vectors, Q30 */
+    int32_t l[3], h[3];   /* model-space unit light and half vectors, Q30 (directional) */
+    int64_t p[3];         /* a point light's model-space position, Q16.16 */
     uint32_t d[3], s[3];  /* diffuse and specular colour */
-    int spec;             /* the light has a specular colour and a half vector */
+    int spec;             /* the light has a specular colour (and, directional, a half vector) */
+    int point;
 } sl_light;
 
 /* Bit length of a non-zero magnitude. */
@@ -77,47 +79,6 @@ static int unit30(const int64_t *vin, int32_t *out)
     return 1;
 }
 
-/* The model matrix's 3x3 as an inverse up to a positive factor: the
- * adjugate times the sign of the determinant. Entries are first scaled to
- * 20 bits so that cofactors (2^41) and the determinant (3 x 2^61) fit. */
-static int inverse_dir(const zl_mat4 *model, int64_t inv[9])
-{
-    int64_t a[9], det;
-    uint64_t big = 0;
-    unsigned len, k;
-    if (model == NULL) {
-        for (k = 0; k < 9; k++)
-            inv[k] = (k % 4u == 0) ? 1 : 0;
-        return 1;
-    }
-    for (k = 0; k < 9; k++) {
-        a[k] = model->m[(k / 3u) * 4u + k % 3u];
-        big |= mag64(a[k]);
-    }
-    if (big == 0)
-        return 0;
-    len = bits64(big);
-    for (k = 0; k < 9; k++)
-        a[k] = len > 20 ? zl_floor_shift64(a[k], len - 20) : a[k] * ((int64_t)1 << (20 - len));
-    /* inv = adj(a): inv[r][c] = cofactor(c, r) */
-    inv[0] = a[4] * a[8] - a[5] * a[7];
-    inv[1] = a[2] * a[7] - a[1] * a[8];
-    inv[2] = a[1] * a[5] - a[2] * a[4];
-    inv[3] = a[5] * a[6] - a[3] * a[8];
-    inv[4] = a[0] * a[8] - a[2] * a[6];
-    inv[5] = a[2] * a[3] - a[0] * a[5];
-    inv[6] = a[3] * a[7] - a[4] * a[6];
-    inv[7] = a[1] * a[6] - a[0] * a[7];
-    inv[8] = a[0] * a[4] - a[1] * a[3];
-    det = a[0] * inv[0] + a[1] * inv[3] + a[2] * inv[6];
-    if (det == 0)
-        return 0;
-    if (det < 0)
-        for (k = 0; k < 9; k++)
-            inv[k] = -inv[k];
-    return 1;
-}
-
 /* unit(inv * v) as Q30 for a direction v of the lights' space (any int64
  * components; scaled to 20 bits first so the products stay below 2^62). */
 static int to_model(const int64_t inv[9], const int64_t *vin, int32_t *out)
@@ -134,42 +95,60 @@ static int to_model(const int64_t inv[9], const int64_t *vin, int32_t *out)
     return unit30(t, out);
 }
 
-static int prepare(const zl_lighting *lt, const zl_mat4 *model, sl_light *pl)
+/* Light i's numbers; vu: the unit viewer (lights' space), vm: in model
+ * space; have_view: the viewer is not zero. */
+static int prepare_light(const zl_light *L, const zl_mat4 *model, const int64_t inv[9], const int32_t *vu,
+                         int have_view, sl_light *pl)
 {
-    int64_t inv[9], view[3], vv[3];
+    int64_t l[3], vv[3];
+    int32_t lu[3];
+    unsigned k;
+    pl->d[0] = L->diffuse.r;
+    pl->d[1] = L->diffuse.g;
+    pl->d[2] = L->diffuse.b;
+    pl->s[0] = L->specular.r;
+    pl->s[1] = L->specular.g;
+    pl->s[2] = L->specular.b;
+    pl->spec = (L->specular.r | L->specular.g | L->specular.b) != 0;
+    pl->point = L->point != 0;
+    if (pl->spec && !have_view)
+        return 0;
+    if (pl->point) /* its vectors are per vertex */
+        return zl_light_point_to_model(model, L->position, pl->p);
+    l[0] = L->dir.x;
+    l[1] = L->dir.y;
+    l[2] = L->dir.z;
+    if (!unit30(l, lu) || !to_model(inv, l, pl->l))
+        return 0;
+    if (!pl->spec)
+        return 1;
+    for (k = 0; k < 3; k++)
+        vv[k] = (int64_t)lu[k] + vu[k];
+    pl->spec = to_model(inv, vv, pl->h); /* 0: half vector of zero, no specular */
+    return 1;
+}
+
+/* Every light's numbers and the viewer in model space (vm, Q30: a point
+ * light's half vectors are made per vertex from it). */
+static int prepare(const zl_lighting *lt, const zl_mat4 *model, sl_light *pl, int32_t *vm)
+{
+    int64_t inv[9], view[3];
+    uint64_t det;
     int32_t vu[3];
-    unsigned i, k;
-    int have_view;
-    if (!inverse_dir(model, inv))
+    unsigned i;
+    int have_view, e;
+    if (!zl_light_inverse3(model, inv, &det, &e))
         return 0;
     view[0] = lt->viewer.x;
     view[1] = lt->viewer.y;
     view[2] = lt->viewer.z;
     have_view = unit30(view, vu);
-    for (i = 0; i < lt->light_count; i++) {
-        const zl_light *L = &lt->lights[i];
-        int64_t l[3];
-        int32_t lu[3];
-        l[0] = L->dir.x;
-        l[1] = L->dir.y;
-        l[2] = L->dir.z;
-        if (!unit30(l, lu) || !to_model(inv, l, pl[i].l))
+    vm[0] = vm[1] = vm[2] = 0;
+    if (have_view && !to_model(inv, view, vm))
+        return 0;
+    for (i = 0; i < lt->light_count; i++)
+        if (!prepare_light(&lt->lights[i], model, inv, vu, have_view, &pl[i]))
             return 0;
-        pl[i].d[0] = L->diffuse.r;
-        pl[i].d[1] = L->diffuse.g;
-        pl[i].d[2] = L->diffuse.b;
-        pl[i].s[0] = L->specular.r;
-        pl[i].s[1] = L->specular.g;
-        pl[i].s[2] = L->specular.b;
-        pl[i].spec = 0;
-        if ((L->specular.r | L->specular.g | L->specular.b) == 0)
-            continue;
-        if (!have_view)
-            return 0;
-        for (k = 0; k < 3; k++)
-            vv[k] = (int64_t)lu[k] + vu[k];
-        pl[i].spec = to_model(inv, vv, pl[i].h); /* 0: half vector of zero, no specular */
-    }
     return 1;
 }
 
@@ -275,13 +254,115 @@ static void light_one_diffuse(const sl_light *l, const uint32_t amb[3], const ui
     }
 }
 
+/* A point light's vectors at model-space position pos (Q16.16): l =
+ * unit(P - pos) and, with specular, h = unit(l + vm) (*spec 0 when that is
+ * zero). 0 when the vertex is at the light (no light reaches it). */
+static int point_vectors(const sl_light *pl, const int32_t *vm, const zl_fixed *pos, int32_t *l, int32_t *h,
+                         int *spec)
+{
+    int64_t v[3];
+    unsigned k;
+    for (k = 0; k < 3; k++)
+        v[k] = pl->p[k] - pos[k]; /* |P| <= 2^46, |pos| < 2^31 */
+    if (!unit30(v, l))
+        return 0;
+    *spec = pl->spec;
+    if (*spec) {
+        for (k = 0; k < 3; k++)
+            v[k] = (int64_t)l[k] + vm[k];
+        *spec = unit30(v, h);
+    }
+    return 1;
+}
+
+/* The diffuse and specular factors (Q12) of point light pl at model-space
+ * position pos, for unit normal u (lit: the normal is not zero). */
+static ZL_NOINLINE void light_factors(const sl_light *pl, const int32_t *vm, const zl_fixed *pos, const int32_t *u,
+                                      int lit, unsigned shininess, uint32_t *d12, uint32_t *s12)
+{
+    int32_t l[3], h[3];
+    int spec = 0;
+    uint32_t d = 0;
+    if (lit && point_vectors(pl, vm, pos, l, h, &spec))
+        d = cos30(u, l);
+    *d12 = (d + (UINT32_C(1) << 17)) >> 18;
+    *s12 = 0;
+    if (d != 0 && spec)
+        *s12 = (pow30(cos30(u, h), shininess) + (UINT32_C(1) << 17)) >> 18;
+}
+
+/* Directional lights first, point lights after, each in their order (the
+ * sums over lights are exact integers: the order changes no colour);
+ * returns the number of directional ones. */
+static unsigned directional_first(sl_light *pl, unsigned n)
+{
+    unsigned i, j, nd = 0;
+    for (i = 0; i < n; i++) {
+        sl_light l = pl[i];
+        if (l.point)
+            continue;
+        for (j = i; j > nd; j--) /* shift the point lights before it up by one */
+            pl[j] = pl[j - 1];
+        pl[nd++] = l;
+    }
+    return nd;
+}
+
+/* What the vertex loop reads (light_loop). */
+typedef struct {
+    const sl_light *pl; /* directional lights first (directional_first), nd of nl */
+    unsigned nd, nl, shininess;
+    const int32_t *vm;
+    const uint32_t *amb, *mtl;
+    const uint8_t *vc;
+    const int16_t *normals;
+    const zl_fixed *positions;
+    uint8_t *colors;
+    uint32_t count;
+} sl_pass;
+
+/* Every vertex by the general equation; with_points a constant at each
+ * call, so that directional-only lighting has no call in its loop. */
+static ZL_ALWAYS_INLINE void light_loop(const sl_pass *p, int with_points)
+{
+    const sl_light *pl = p->pl;
+    uint32_t v;
+    unsigned i, k;
+    for (v = 0; v < p->count; v++) {
+        int32_t u[3];
+        uint32_t d12[ZL_MAX_LIGHTS], s12[ZL_MAX_LIGHTS];
+        const uint8_t *mat = p->vc != NULL ? &p->vc[v * 3u] : NULL;
+        int lit = normal30(&p->normals[v * 3u], u);
+        for (i = 0; i < p->nd; i++) {
+            uint32_t d = lit ? cos30(u, pl[i].l) : 0;
+            d12[i] = (d + (UINT32_C(1) << 17)) >> 18;
+            s12[i] = 0;
+            if (d != 0 && pl[i].spec)
+                s12[i] = (pow30(cos30(u, pl[i].h), p->shininess) + (UINT32_C(1) << 17)) >> 18;
+        }
+        for (; with_points && i < p->nl; i++)
+            light_factors(&pl[i], p->vm, &p->positions[v * 3u], u, lit, p->shininess, &d12[i], &s12[i]);
+        for (k = 0; k < 3; k++) {
+            uint32_t f = p->amb[k], cs = 0;
+            for (i = 0; i < p->nl; i++) {
+                f += pl[i].d[k] * d12[i]; /* below 5 * 255 * 2^12 < 2^23 */
+                cs += pl[i].s[k] * s12[i];
+            }
+            p->colors[v * 3u + k] = light_channel(mat != NULL ? mat[k] : p->mtl[k], f, cs);
+        }
+    }
+}
+
 zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const zl_mesh *mesh,
                             const int16_t *normals, uint8_t *colors)
 {
     sl_light pl[ZL_MAX_LIGHTS];
+    sl_pass pass;
     const uint8_t *vc;
-    uint32_t v, count, amb[3], mtl[3];
-    unsigned i, k, nl, shininess;
+    int32_t vm[3];
+    uint32_t count, amb[3], mtl[3];
+    unsigned i, nl, nd, shininess;
+    int points = 0;
     if (lt == NULL || mesh == NULL)
         return ZL_ERR_ARG;
     if (lt->light_count > ZL_MAX_LIGHTS || lt->shininess > ZL_MAX_SHININESS)
@@ -289,9 +370,14 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
     count = mesh->vertex_count;
     if (count != 0 && (normals == NULL || colors == NULL))
         return ZL_ERR_ARG;
-    if (!prepare(lt, model, pl))
+    for (i = 0; i < lt->light_count; i++)
+        points |= lt->lights[i].point != 0;
+    if (points && count != 0 && mesh->positions == NULL)
+        return ZL_ERR_ARG; /* a point light reads the positions */
+    if (!prepare(lt, model, pl, vm))
         return ZL_ERR_RANGE;
     nl = lt->light_count;
+    nd = directional_first(pl, nl);
     vc = mesh->vertex_colors;
     /* in locals: a store to colors (bytes) may alias *lt, which the loop
      * would otherwise read again after every one */
@@ -302,33 +388,26 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
     mtl[1] = lt->material.g;
     mtl[2] = lt->material.b;
     shininess = lt->shininess;
-    if (nl == 1 && !pl[0].spec) {
+    if (nl == 1 && !pl[0].spec && !pl[0].point) {
         light_one_diffuse(&pl[0], amb, mtl, vc, normals, colors, count);
         return ZL_OK;
     }
-    for (v = 0; v < count; v++) {
-        int32_t u[3];
-        uint32_t d12[ZL_MAX_LIGHTS], s12[ZL_MAX_LIGHTS];
-        const uint8_t *mat = vc != NULL ? &vc[v * 3u] : NULL;
-        int lit = normal30(&normals[v * 3u], u);
-        for (i = 0; i < nl; i++) {
-            uint32_t d = lit ? cos30(u, pl[i].l) : 0;
-            d12[i] = (d + (UINT32_C(1) << 17)) >> 18;
-            s12[i] = 0;
-            if (d != 0 && pl[i].spec) {
-                uint32_t x = cos30(u, pl[i].h);
-                s12[i] = (pow30(x, shininess) + (UINT32_C(1) << 17)) >> 18;
-            }
-        }
-        for (k = 0; k < 3; k++) {
-            uint32_t f = amb[k], cs = 0;
-            for (i = 0; i < nl; i++) {
-                f += pl[i].d[k] * d12[i]; /* below 5 * 255 * 2^12 < 2^23 */
-                cs += pl[i].s[k] * s12[i];
-            }
-            colors[v * 3u + k] = light_channel(mat != NULL ? mat[k] : mtl[k], f, cs);
-        }
-    }
+    pass.pl = pl;
+    pass.nd = nd;
+    pass.nl = nl;
+    pass.shininess = shininess;
+    pass.vm = vm;
+    pass.amb = amb;
+    pass.mtl = mtl;
+    pass.vc = vc;
+    pass.normals = normals;
+    pass.positions = mesh->positions;
+    pass.colors = colors;
+    pass.count = count;
+    if (nd == nl)
+        light_loop(&pass, 0); /* no call in the loop: directional lights keep their registers */
+    else
+        light_loop(&pass, 1);
     return ZL_OK;
 }
 
@@ -348,5 +427,7 @@ void zl_lighting_default(zl_lighting *lt)
         lt->lights[i].dir.z = ZL_FX_ONE;
         lt->lights[i].diffuse.r = lt->lights[i].diffuse.g = lt->lights[i].diffuse.b = 255;
         lt->lights[i].specular.r = lt->lights[i].specular.g = lt->lights[i].specular.b = 0;
+        lt->lights[i].point = 0;
+        lt->lights[i].position.x = lt->lights[i].position.y = lt->lights[i].position.z = 0;
     }
 }

@@ -158,7 +158,7 @@ static inline zl_vec3 zl_unit_vec3_f(float x, float y, float z)
 
 /* ------------------------------------------------------------------ lights */
 
-/* A smooth-lighting light (zl_lighting): direction towards it (normalised
+/* A directional light (zl_lighting): direction towards it (normalised
  * here), diffuse and specular colours in 0 .. 1. */
 static inline zl_light zl_light_d(const double dir[3], const double diffuse[3], const double specular[3])
 {
@@ -166,6 +166,17 @@ static inline zl_light zl_light_d(const double dir[3], const double diffuse[3], 
     l.dir = zl_unit_vec3_d(dir[0], dir[1], dir[2]);
     l.diffuse = zl_rgb_d(diffuse[0], diffuse[1], diffuse[2]);
     l.specular = zl_rgb_d(specular[0], specular[1], specular[2]);
+    l.point = 0;
+    l.position = zl_vec3_d(0.0, 0.0, 0.0);
+    return l;
+}
+/* A point light at position (the lights' space), colours as zl_light_d. */
+static inline zl_light zl_point_light_d(const double position[3], const double diffuse[3], const double specular[3])
+{
+    static const double along_z[3] = {0.0, 0.0, 1.0};
+    zl_light l = zl_light_d(along_z, diffuse, specular);
+    l.point = 1;
+    l.position = zl_vec3_d(position[0], position[1], position[2]);
     return l;
 }
 static inline zl_light zl_light_f(const float dir[3], const float diffuse[3], const float specular[3])
