@@ -14,7 +14,7 @@
 #include "../core/src/3_raster/zl_raster.h"
 #include "../core/src/3_raster/zl_span_tex.h"
 #include "unity.h"
-#include "zt_rounds.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}

@@ -75,7 +75,7 @@ static void test_pipeline_agrees_with_formula(void)
     unsigned i;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_perspective(&proj, 16384, ZL_FX_ONE, N_NEAR, N_FAR));
     for (i = 0; i < sizeof dists_q8 / sizeof dists_q8[0]; i++) {
-        zl_fixed z = dists_q8[i] * 256;
+        zl_fixed z = (zl_fixed)dists_q8[i] * 256; /* zl_fixed: int may have 16 bits */
         uint16_t got = pipeline_depth(z, &proj);
         /* The matrix holds A and B rounded to Q16.16: allow 2 steps. */
         TEST_ASSERT_INT_WITHIN(2, zl_depth_of_distance(N_NEAR, N_FAR, z), got);

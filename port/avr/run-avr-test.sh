@@ -8,9 +8,11 @@
 #       compile the core (CONFIG: "minimal", zl_config.h's feature switches
 #       all off, or "all", every feature on), tests/unity and tests/support
 #       with avr-gcc into WORK/CONFIG/libzt.a
-#   port/avr/run-avr-test.sh run WORK CONFIG TEST
-#       compile tests/TEST.c with -Dmain=avr_test_main and the project's
-#       warnings, link it with port/avr/avr_test_main.c and the library,
+#   port/avr/run-avr-test.sh run WORK CONFIG TEST ARENA [CFLAGS...]
+#       compile tests/TEST.c with -Dmain=avr_test_main, the project's
+#       warnings and CFLAGS (a test's smaller sizes), and tests/support/
+#       zt_guard.c with an arena of ARENA bytes (the test's guarded buffers),
+#       link it with port/avr/avr_test_main.c and the library,
 #       check that it fits the chip (flash: .text + .data <= 262144 bytes;
 #       RAM: .data + .bss + the stack's high-water mark <= 8192 bytes) and
 #       run it under QEMU with USART0 as its output (port/avr/qemu-avr.sh)
@@ -21,7 +23,7 @@
 # failure) when avr-gcc or qemu-system-avr is missing or when the test
 # ignored cases without a failure (Unity's "0 Failures N Ignored").
 set -eu
-[ $# -ge 3 ] || { echo "usage: $0 lib WORK CONFIG | run WORK CONFIG TEST" >&2; exit 2; }
+[ $# -ge 3 ] || { echo "usage: $0 lib WORK CONFIG | run WORK CONFIG TEST ARENA [CFLAGS...]" >&2; exit 2; }
 mode=$1 work=$2 config=$3
 top=$(cd "$(dirname "$0")/../.." && pwd)
 for tool in avr-gcc avr-ar avr-objcopy avr-objdump avr-size qemu-system-avr; do
@@ -35,8 +37,12 @@ all) features= ;;
 esac
 lib=$work/$config
 # As port/avr/run-avr-model.sh: -Os, section garbage collection; the QEMU
-# 7.2 work-arounds of avr_board.h (SCENE_QEMU_DATA_PRELOAD).
-cflags="-mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 $features -DZT_GUARD_ARENA_BYTES=${AVR_GUARD_ARENA:-2048}u -DZT_ROUNDS_DIVISOR=${AVR_ROUNDS_DIVISOR:-50}
+# 7.2 work-arounds of avr_board.h (SCENE_QEMU_DATA_PRELOAD). A draw cache of
+# 64 slots (1,040 bytes, not the default 14,480 of 1024 slots: zl_config.h);
+# the random rounds of the tests divided by ZT_ROUNDS_DIVISOR
+# (tests/support/zt_target.h: QEMU's AVR is slow, 64-bit arithmetic a
+# library call there).
+cflags="-mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 $features -DZL_DRAW_CACHE_SLOTS=64 -DZT_ROUNDS_DIVISOR=${AVR_ROUNDS_DIVISOR:-50} -DZT_SMALL_RAM=1
     -ffunction-sections -fdata-sections -I$top/core/include -I$top/port/avr -I$top/tests/unity -I$top/tests/support"
 warnings="-Wall -Wextra -pedantic -Werror"
 
@@ -45,8 +51,9 @@ build_library() {
     mkdir -p "$lib/obj"
     # The panel controller model (zt_panel_model.c) holds a 2 x 320 x 240
     # pixel RAM: only test_spi_panel uses it, and it is not built for AVR.
+    # zt_guard.c is compiled with each test: its arena's size is the test's.
     for f in $(find "$top/core/src" -name '*.c' | sort) "$top/tests/unity/unity.c" \
-        $(ls "$top"/tests/support/*.c | grep -v zt_panel_model.c) "$top/port/avr/avr_test_main.c"; do
+        $(ls "$top"/tests/support/*.c | grep -v 'zt_panel_model.c\|zt_guard.c') "$top/port/avr/avr_test_main.c"; do
         o=$lib/obj/$(basename "$f" .c).o
         extra= # avr_board.h's helpers are static: not all are used here
         [ "${f##*/}" != avr_test_main.c ] || extra=-Wno-unused-function
@@ -59,14 +66,18 @@ build_library() {
 }
 
 run_test() {
-    test=$1
+    test=$1 arena=$2
+    shift 2
     name=avr_$test
     [ -f "$lib/libzt.a" ] || { echo "$name: $lib/libzt.a missing (CTest's avr_lib_$config builds it)"; exit 1; }
     dir=$work/$test
     mkdir -p "$dir"
     # shellcheck disable=SC2086
+    avr-gcc $cflags $warnings -DZT_GUARD_ARENA_BYTES="$arena"u -c "$top/tests/support/zt_guard.c" -o "$dir/zt_guard.o"
+    # shellcheck disable=SC2086
     avr-gcc $cflags $warnings -Dmain=avr_test_main -DZLINE_SHARED_DIR='""' -DZLINE_SOURCE_DIR='""' -DZLINE_BINARY_DIR='""' \
-        "$top/tests/$test.c" "$lib/avr_test_main.o" "$lib/libzt.a" -lm -Wl,--gc-sections -o "$dir/$test.elf"
+        "$@" "$top/tests/$test.c" "$dir/zt_guard.o" "$lib/avr_test_main.o" "$lib/libzt.a" -lm -Wl,--gc-sections \
+        -o "$dir/$test.elf"
     set -- $(avr-size "$dir/$test.elf" | awk 'NR == 2 { print $1, $2, $3 }')
     text=$1 data=$2 bss=$3
     echo "$name: flash $((text + data)) B of 262144; RAM before the stack $((data + bss)) B (.data $data + .bss $bss)"
@@ -92,6 +103,8 @@ run_test() {
 
 case $mode in
 lib) build_library ;;
-run) [ $# -eq 4 ] || { echo "usage: $0 run WORK CONFIG TEST" >&2; exit 2; }; run_test "$4" ;;
-*) echo "usage: $0 lib WORK CONFIG | run WORK CONFIG TEST" >&2; exit 2 ;;
+run) [ $# -ge 5 ] || { echo "usage: $0 run WORK CONFIG TEST ARENA [CFLAGS...]" >&2; exit 2; }
+    shift 3
+    run_test "$@" ;;
+*) echo "usage: $0 lib WORK CONFIG | run WORK CONFIG TEST ARENA [CFLAGS...]" >&2; exit 2 ;;
 esac
