@@ -17,13 +17,14 @@
 #include "unity.h"
 #include "zline/zline.h"
 #include "zt_frame.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}
 
 enum { W = 32, H = 24, FILL = 0xA5 };
 
-static uint16_t color[W * H], depth[W * H];
+static uint16_t color[W * H] ZT_ALIGNED(2), depth[W * H] ZT_ALIGNED(2);
 /* room for the cache at an offset of 8 (aligned) or 4 (misaligned), and
  * guard bytes after it; one word more, as a uint64_t array is not 8-byte
  * aligned on every target (avr-gcc aligns it to 1): arena_start() is the

@@ -9,6 +9,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -43,7 +44,7 @@ static void test_near_far_monotonic_formula(void)
  * and return the depth stored at the centre pixel. */
 static uint16_t pipeline_depth(zl_fixed dist, const zl_mat4 *proj)
 {
-    static uint16_t depth[8 * 8];
+    static uint16_t depth[8 * 8] ZT_ALIGNED(2);
     zl_target t;
     zl_context ctx;
     zl_rgb black = {0, 0, 0};
