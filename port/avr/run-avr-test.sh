@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # The portable unit suite (tests/test_*.c) on the ATmega2560 under
-# qemu-system-avr -M mega2560 (issue 23): CTest avr_lib_* builds the library
+# qemu-system-avr -M mega2560 (issue 23): CTest avr_lib builds the library
 # once, each avr_test_* builds one test against it and runs it.
 #
 #   port/avr/run-avr-test.sh lib WORK CONFIG
@@ -53,7 +53,8 @@ build_library() {
     # pixel RAM: only test_spi_panel uses it, and it is not built for AVR.
     # zt_guard.c is compiled with each test: its arena's size is the test's.
     for f in $(find "$top/core/src" -name '*.c' | sort) "$top/tests/unity/unity.c" \
-        $(ls "$top"/tests/support/*.c | grep -v 'zt_panel_model.c\|zt_guard.c') "$top/port/avr/avr_test_main.c"; do
+        "$top"/tests/support/*.c "$top/port/avr/avr_test_main.c"; do
+        case ${f##*/} in zt_panel_model.c | zt_guard.c) continue ;; esac
         o=$lib/obj/$(basename "$f" .c).o
         extra= # avr_board.h's helpers are static: not all are used here
         [ "${f##*/}" != avr_test_main.c ] || extra=-Wno-unused-function
@@ -69,7 +70,7 @@ run_test() {
     test=$1 arena=$2
     shift 2
     name=avr_$test
-    [ -f "$lib/libzt.a" ] || { echo "$name: $lib/libzt.a missing (CTest's avr_lib_$config builds it)"; exit 1; }
+    [ -f "$lib/libzt.a" ] || { echo "$name: $lib/libzt.a missing (CTest's avr_lib builds it)"; exit 1; }
     dir=$work/$test
     mkdir -p "$dir"
     # shellcheck disable=SC2086
@@ -78,14 +79,16 @@ run_test() {
     avr-gcc $cflags $warnings -Dmain=avr_test_main -DZLINE_SHARED_DIR='""' -DZLINE_SOURCE_DIR='""' -DZLINE_BINARY_DIR='""' \
         "$@" "$top/tests/$test.c" "$dir/zt_guard.o" "$lib/avr_test_main.o" "$lib/libzt.a" -lm -Wl,--gc-sections \
         -o "$dir/$test.elf"
+    # shellcheck disable=SC2046 # three numbers
     set -- $(avr-size "$dir/$test.elf" | awk 'NR == 2 { print $1, $2, $3 }')
     text=$1 data=$2 bss=$3
     echo "$name: flash $((text + data)) B of 262144; RAM before the stack $((data + bss)) B (.data $data + .bss $bss)"
     start=$(date +%s)
-    sh "$top/port/avr/qemu-avr.sh" "$name" "$dir/$test.elf" "$dir/serial.txt" "${AVR_TIMEOUT:-100}" || exit 1
+    sh "$top/port/avr/qemu-avr.sh" "$name" "$dir/$test.elf" "$dir/serial.txt" "${AVR_TIMEOUT:-120}" || exit 1
     grep -v '^done' "$dir/serial.txt"
     result=$(sed -n 's/^# exit \([0-9]*\)$/\1/p' "$dir/serial.txt")
     stack=$(sed -n 's/^# stack: \([0-9]*\) bytes$/\1/p' "$dir/serial.txt")
+    stack=${stack:-0}
     total=$((data + bss + stack))
     echo "$name: RAM used $total B of 8192 (.data $data + .bss $bss + stack $stack); $(($(date +%s) - start)) s under QEMU"
     status=0
@@ -93,7 +96,13 @@ run_test() {
         echo "$name: over the ATmega2560's 8192 bytes of SRAM"
         status=1
     fi
-    [ "$result" = 0 ] || { echo "$name: $result failures"; status=1; }
+    if [ -z "$result" ]; then
+        echo "$name: no '# exit' line: the test did not return"
+        status=1
+    elif [ "$result" != 0 ]; then
+        echo "$name: $result failures"
+        status=1
+    fi
     if [ "$status" -eq 0 ] && grep -q ' 0 Failures [1-9][0-9]* Ignored' "$dir/serial.txt"; then
         echo "$name: skipped, cases ignored"
         exit 77
