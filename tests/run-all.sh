@@ -6,7 +6,7 @@
 #      for the Mega 2560 by arduino-builder, its frames on an ATmega2560 under
 #      qemu-system-avr against the host's; CTest arduino_*, about 25 s; and
 #      the portable tests that fit an ATmega2560 under qemu-system-avr,
-#      port/avr/run-avr-test.sh: CTest avr_lib, avr_test_*, about 40 s)
+#      port/avr/run-avr-test.sh: CTest avr_lib, avr_test_*, about 43 s)
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer, built
 #      with clang: its -fsanitize=undefined includes float-cast-overflow,
 #      which GCC's does not (the OBJ normalisation finding of issue 16)
