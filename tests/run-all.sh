@@ -4,7 +4,9 @@
 #   1. host build (warnings are errors), all unit tests, tools and benchmark checks
 #      (and the Arduino library, issue 24: its manifests, its example compiled
 #      for the Mega 2560 by arduino-builder, its frames on an ATmega2560 under
-#      qemu-system-avr against the host's; CTest arduino_*, about 25 s)
+#      qemu-system-avr against the host's; CTest arduino_*, about 25 s; and
+#      the portable tests that fit an ATmega2560 under qemu-system-avr,
+#      port/avr/run-avr-test.sh: CTest avr_lib, avr_test_*, about 43 s)
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer, built
 #      with clang: its -fsanitize=undefined includes float-cast-overflow,
 #      which GCC's does not (the OBJ normalisation finding of issue 16)

@@ -17,16 +17,26 @@
 #include "unity.h"
 #include "zline/zline.h"
 #include "zt_frame.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}
 
 enum { W = 32, H = 24, FILL = 0xA5 };
 
-static uint16_t color[W * H], depth[W * H];
+static uint16_t color[W * H] ZT_ALIGNED(2), depth[W * H] ZT_ALIGNED(2);
 /* room for the cache at an offset of 8 (aligned) or 4 (misaligned), and
- * guard bytes after it */
-static uint64_t arena[ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) / 8 + 8];
+ * guard bytes after it; one word more, as a uint64_t array is not 8-byte
+ * aligned on every target (avr-gcc aligns it to 1): arena_start() is the
+ * first 8-byte boundary in it */
+#define ARENA_BYTES (ZL_DRAW_CACHE_BYTES(ZL_DRAW_CACHE_SLOTS) + 64u)
+static uint64_t arena_words[ARENA_BYTES / 8 + 1];
+
+static uint8_t *arena_start(void)
+{
+    uint8_t *p = (uint8_t *)arena_words;
+    return p + (8u - (unsigned)((uintptr_t)p & 7u)) % 8u;
+}
 
 static void test_context_fits_one_kilobyte(void)
 {
@@ -56,9 +66,9 @@ static size_t draw_with_cache(size_t offset, size_t bytes)
     zl_context ctx;
     zl_mesh m;
     zl_rgb bg = {0, 0, 0};
-    const uint8_t *a = (const uint8_t *)arena;
+    uint8_t *a = arena_start();
     size_t i, changed = 0;
-    memset(arena, FILL, sizeof arena);
+    memset(a, FILL, ARENA_BYTES);
     memset(&m, 0, sizeof m);
     m.positions = pos;
     m.indices = idx;
@@ -68,10 +78,10 @@ static size_t draw_with_cache(size_t offset, size_t bytes)
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
     TEST_ASSERT_NULL(ctx.draw_cache);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
-    ctx.draw_cache = (uint8_t *)arena + offset;
+    ctx.draw_cache = a + offset;
     ctx.draw_cache_bytes = bytes;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
-    for (i = 0; i < sizeof arena; i++)
+    for (i = 0; i < ARENA_BYTES; i++)
         if (a[i] != FILL) {
             changed++;
             TEST_ASSERT_TRUE_MESSAGE(i >= offset && i < offset + zl_draw_cache_bytes(), "a byte outside the cache");
@@ -87,7 +97,7 @@ static void test_draw_cache_used_when_it_fits(void)
 {
     size_t need = zl_draw_cache_bytes();
     if (need == 0) { /* a library without the cache never touches one */
-        TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)draw_with_cache(8, sizeof arena - 8));
+        TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)draw_with_cache(8, ARENA_BYTES - 8));
         return;
     }
     /* the tags of every slot are reset: at least 2 bytes a slot change */

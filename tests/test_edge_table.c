@@ -46,7 +46,7 @@ static double crossing_z(const zl_active *t, const zl_edge *e)
 {
     double x = (double)e->x - (double)e->rem / e->den;
     double v = (double)t->z.row + (x - t->ax) * (double)t->z.dx;
-    return v / (double)(1 << 20) / 65535.0 * 4.0;
+    return v / (double)(INT32_C(1) << 20) / 65535.0 * 4.0;
 }
 
 static void check_edge(const zl_active *t, const zl_edge *e, int x6_expected, double z_expected)

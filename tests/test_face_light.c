@@ -15,11 +15,16 @@
 #include "zline/zline.h"
 #include "zt_frame.h"
 #include "zt_ref.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}
 
+#if ZT_SMALL_RAM /* three frames of 24x20 fit the ATmega2560's 8 KB with the rest */
+enum { W = 24, H = 20, NV = 30, NT = 10 };
+#else
 enum { W = 40, H = 32, NV = 30, NT = 10 };
+#endif
 
 static uint32_t rng = 4242u;
 static zl_fixed positions[NV * 3];
@@ -85,7 +90,7 @@ static zl_vec3 mat_dir(const zl_mat4 *m, zl_vec3 v) /* the 3x3 times v (exact fo
     return o;
 }
 
-static uint16_t frame_a[W * H], frame_b[W * H], depth[W * H];
+static uint16_t frame_a[W * H] ZT_ALIGNED(2), frame_b[W * H] ZT_ALIGNED(2), depth[W * H] ZT_ALIGNED(2);
 
 static void draw(uint16_t *color, const zl_mesh *m, const zl_mat4 *mvp, const zl_state *st)
 {

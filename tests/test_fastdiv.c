@@ -14,6 +14,7 @@
 #include "../core/src/3_raster/zl_raster.h"
 #include "../core/src/3_raster/zl_span_tex.h"
 #include "unity.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -108,8 +109,8 @@ static void test_udiv_edge_cases(void)
 /* n = q d + r for random q, r: every quotient, including ones near 2^32. */
 static void test_udiv_random_quotients(void)
 {
-    unsigned k;
-    for (k = 0; k < 60000u; k++) {
+    uint32_t k;
+    for (k = 0; k < ZT_ROUNDS(60000); k++) {
         uint64_t n;
         uint32_t d;
         random_division(k, 0, &n, &d);
@@ -121,8 +122,8 @@ static void test_udiv_random_quotients(void)
  * divisor halves near 0x8000 and 0xFFFF, remainders near the divisor. */
 static void test_udiv_random_numerators(void)
 {
-    unsigned k;
-    for (k = 0; k < 60000u; k++) {
+    uint32_t k;
+    for (k = 0; k < ZT_ROUNDS(60000); k++) {
         uint32_t d = rnd_divisor();
         uint64_t n = rnd64() % ((uint64_t)d << 32);
         check(n, d);
@@ -161,8 +162,8 @@ static void test_div_inv_corners(void)
 /* n = q d + r with random q and r, divisors of every bit length. */
 static void test_div_inv_random(void)
 {
-    unsigned k;
-    for (k = 0; k < 100000u; k++) {
+    uint32_t k;
+    for (k = 0; k < ZT_ROUNDS(100000); k++) {
         uint64_t n;
         uint32_t d;
         random_division(k, 1, &n, &d);
@@ -347,8 +348,9 @@ static void random_draw(zl_mat4 *m, zl_fixed *pos, uint16_t *wd, uint16_t *ht)
 
 static void test_cache_matches_64bit_formulas(void)
 {
-    unsigned draw, v, inside = 0, complex = 0, invalid = 0;
-    for (draw = 0; draw < 4000u; draw++) {
+    uint32_t draw, inside = 0, complex = 0, invalid = 0; /* 96000 vertices: beyond a 16-bit unsigned */
+    unsigned v;
+    for (draw = 0; draw < ZT_ROUNDS(4000); draw++) {
         zl_mat4 m;
         zl_fixed pos[NV * 3];
         zl_mesh mesh = {0};
@@ -390,7 +392,7 @@ static void test_cache_matches_64bit_formulas(void)
         TEST_ASSERT_EQUAL_INT(ref_cache(m.m, &pos[8 * 3u], s.width, s.height).x, cache[8].x);
     }
     /* every outcome is exercised many times */
-    TEST_ASSERT_TRUE(inside > 5000u && complex > 5000u && invalid > 5000u);
+    TEST_ASSERT_TRUE(inside > ZT_ROUNDS(5000) && complex > ZT_ROUNDS(5000) && invalid > ZT_ROUNDS(5000));
     {
         /* no vertices: only the matrix decides */
         zl_mat4 m;
@@ -488,13 +490,14 @@ static void test_cache_edges(void)
  * 2^47, positions at and around every power of two and its negative. */
 static void test_cache_position_bound(void)
 {
-    unsigned draw, k, j;
-    for (draw = 0; draw < 600u; draw++) {
+    uint32_t draw;
+    unsigned k, j;
+    for (draw = 0; draw < ZT_ROUNDS(600); draw++) {
         zl_mat4 m;
         zl_fixed p[3];
         unsigned row = draw % 4u;
         /* |m0| + |m1| + |m2| near a power of two, translation near its limit */
-        int32_t big = (int32_t)((1u << (draw % 31u)) - 1u + rnd32() % 3u);
+        int32_t big = (int32_t)((UINT32_C(1) << (draw % 31u)) - 1u + rnd32() % 3u);
         zl_mat4_identity(&m);
         m.m[14] = ZL_FX_ONE;
         m.m[15] = ZL_FX_ONE / 2 + (zl_fixed)(rnd32() % 65536u);
@@ -505,7 +508,7 @@ static void test_cache_position_bound(void)
                                           : (zl_fixed)(rnd32() % 9u) - 4;
         for (k = 0; k <= 30u; k++) {
             for (j = 0; j < 8u; j++) {
-                int32_t e = (int32_t)(1u << k), v = (j & 1u) ? -e : e;
+                int32_t e = (int32_t)(UINT32_C(1) << k), v = (j & 1u) ? -e : e;
                 v = (int32_t)((uint32_t)v + (uint32_t)((int32_t)(j >> 1) - 1)); /* -1, 0, +1, +2 around it */
                 p[0] = clamp_lim(v);
                 p[1] = (j & 4u) ? clamp_lim(-(int64_t)v) : p[0] / 3;
@@ -555,8 +558,8 @@ static void test_depth_edges(void)
  * planes too) against the 64-bit formulas. */
 static void test_project_matches_64bit_formulas(void)
 {
-    unsigned k;
-    for (k = 0; k < 100000u; k++) {
+    uint32_t k;
+    for (k = 0; k < ZT_ROUNDS(100000); k++) {
         zl_mat4 m;
         zl_source s = {0};
         zl_cvert v = {0, 0, 0, 0, 0, 0, 0, ZL_ZD_NONE};
@@ -656,15 +659,15 @@ static void rnd_vertex(zl_fixed *v, const zl_fixed *near, unsigned edge_bits)
     for (k = 0; k < 3; k++) {
         uint32_t r = rnd32(); /* drawn either way, so the sequence does not depend on edge_bits */
         /* in [-2^(edge_bits-1), 2^(edge_bits-1)), the subtraction done unsigned */
-        int32_t d = edge_bits ? (int32_t)((r >> (32u - edge_bits)) - (1u << (edge_bits - 1u))) : 0;
+        int32_t d = edge_bits ? (int32_t)((r >> (32u - edge_bits)) - (UINT32_C(1) << (edge_bits - 1u))) : 0;
         v[k] = near ? (zl_fixed)((uint32_t)near[k] + (uint32_t)d) : (zl_fixed)rnd32();
     }
 }
 
 static void test_lighting_matches_64bit_definition(void)
 {
-    unsigned k, lit = 0, dark = 0;
-    for (k = 0; k < 200000u; k++) {
+    uint32_t k, lit = 0, dark = 0;
+    for (k = 0; k < ZT_ROUNDS(200000); k++) {
         zl_fixed pos[9];
         uint16_t idx[3] = {0, 1, 2};
         zl_mesh mesh = {0};
@@ -728,7 +731,7 @@ static void test_lighting_matches_64bit_definition(void)
             dark += want == st.ambient;
         }
     }
-    TEST_ASSERT_TRUE(lit > 20000u && dark > 20000u);
+    TEST_ASSERT_TRUE(lit > ZT_ROUNDS(20000) && dark > ZT_ROUNDS(20000));
 }
 
 /* Lighting at the edges of its fast paths: first vertex at and around
@@ -742,8 +745,9 @@ static void test_lighting_edges(void)
     static const int32_t es[] = {-0x4001, -0x4000, -0x3FFF, -1, 0, 1, 0x3FFF, 0x4000, 0x4001, -0x2000, 0x2345};
     static const int32_t ls[] = {0, 1, -1, 3, -3, 4, -4, 5, -5, 65535, 65536, 65539, 65540, 65543, -65535, -65536,
                                  -65539, -65540, -65543, 24576, -32768, 49152, INT32_MAX, INT32_MIN};
-    unsigned k, i;
-    for (k = 0; k < 40000u; k++) {
+    uint32_t k;
+    unsigned i;
+    for (k = 0; k < ZT_ROUNDS(40000); k++) {
         zl_fixed pos[9];
         uint16_t idx[3] = {0, 1, 2};
         zl_mesh mesh = {0};
@@ -817,7 +821,7 @@ static void test_isqrt32_squares(void)
             v = ((uint32_t)1 << k) * (1u + (d & 3u)) - 1u - (d >> 2);
             TEST_ASSERT_EQUAL_UINT(ref_isqrt(v), zl_isqrt32(v));
         }
-    for (k = 0; k < 100000u; k++) {
+    for (k = 0; k < ZT_ROUNDS(100000); k++) {
         uint32_t v = rnd32() >> (k % 32u);
         TEST_ASSERT_EQUAL_UINT(ref_isqrt(v), zl_isqrt32(v));
     }
@@ -880,9 +884,9 @@ static void test_mul_s32_split(void)
  * the clamp range. */
 static void test_persp_recip_near(void)
 {
-    int k;
-    for (k = 0; k < 200000; k++) {
-        int64_t q0 = (int64_t)(rnd32() % (1u << 30)), q, qc, dq;
+    uint32_t k;
+    for (k = 0; k < ZT_ROUNDS(200000); k++) {
+        int64_t q0 = (int64_t)(rnd32() % (UINT32_C(1) << 30)), q, qc, dq;
         uint64_t want, r0;
         switch (k % 4) {
         case 0:
@@ -892,16 +896,16 @@ static void test_persp_recip_near(void)
             dq = (int64_t)(rnd32() % 4097u) - 2048;
             break;
         case 2:
-            dq = (int64_t)(rnd32() % (1u << 20)) - (1 << 19);
+            dq = (int64_t)(rnd32() % (UINT32_C(1) << 20)) - (INT32_C(1) << 19);
             break;
         default:
-            dq = (int64_t)(rnd32() % (1u << 30)) - (1 << 29);
+            dq = (int64_t)(rnd32() % (UINT32_C(1) << 30)) - (INT32_C(1) << 29);
             break;
         }
         if (k % 97 == 0)
             q0 = (int64_t)(rnd32() % 5000u);
         q = q0 + dq;
-        qc = q < 4096 ? 4096 : (q > (1 << 29) ? (1 << 29) : q);
+        qc = q < 4096 ? 4096 : (q > (INT64_C(1) << 29) ? (INT64_C(1) << 29) : q);
         want = ((uint64_t)1 << 44) / (uint64_t)qc;
         r0 = persp_recip(q0);
         TEST_ASSERT_EQUAL_UINT64(want, persp_recip_near(r0, q));

@@ -25,15 +25,18 @@
 #include <string.h>
 
 #include "unity.h"
+#include "zline/zl_visibility.h"
 #include "zline/zline.h"
 #include "zt_ref.h"
 
 void setUp(void) {}
 void tearDown(void) {}
 
-static size_t align8(size_t n)
+/* Sizes in 32 bits: they exceed a 16-bit size_t (AVR), where zl_frame_bytes
+ * must then return 0, never a wrapped size. */
+static uint32_t align8(uint32_t n)
 {
-    return (n + 7u) & ~(size_t)7u;
+    return (n + 7u) & ~UINT32_C(7);
 }
 
 static void base_config(zl_frame_config *c)
@@ -78,15 +81,25 @@ static records record_sizes(void)
 }
 
 /* The documented size (without styled or textured records). */
-static size_t documented_bytes(const zl_frame_config *c, const records *r)
+static uint32_t documented_bytes(const zl_frame_config *c, const records *r)
 {
-    size_t bpp = zl_format_bytes((zl_format)c->format), band_px = (size_t)c->width * c->band_rows;
-    size_t pool = align8((size_t)c->max_active * r->active);
-    size_t gouraud = c->gouraud ? (size_t)c->max_active * r->gouraud : 0;
-    return align8(band_px * bpp) * c->color_buffers + align8(band_px * 2) +
-           align8(ZL_VERTEX_CACHE_BYTES(c->max_vertices)) + align8(2u * ((size_t)c->height + 1)) +
-           align8(2u * (size_t)c->max_triangles) + pool + align8(gouraud) +
-           align8((size_t)c->max_meshes * r->mesh);
+    uint32_t bpp = (uint32_t)zl_format_bytes((zl_format)c->format), band_px = (uint32_t)c->width * c->band_rows;
+    uint32_t pool = align8(c->max_active * (uint32_t)r->active);
+    uint32_t gouraud = c->gouraud ? c->max_active * (uint32_t)r->gouraud : 0;
+    return align8(band_px * bpp) * c->color_buffers + align8(band_px * 2u) +
+           align8((uint32_t)ZL_VERTEX_CACHE_BYTES(c->max_vertices)) + align8(2u * ((uint32_t)c->height + 1u)) +
+           align8(2u * c->max_triangles) + pool + align8(gouraud) + align8((uint32_t)c->max_meshes * (uint32_t)r->mesh);
+}
+
+/* What zl_frame_bytes must return for a documented size: the size, or 0 when
+ * no buffer can have it (beyond SIZE_MAX: 65535 where size_t has 16 bits). */
+static uint32_t expected_bytes(uint32_t documented)
+{
+#if SIZE_MAX < UINT32_MAX
+    return documented > SIZE_MAX ? 0 : documented;
+#else
+    return documented;
+#endif
 }
 
 static void test_each_triangle_costs_two_bytes_and_each_vertex_twelve(void)
@@ -119,7 +132,7 @@ static void test_frame_bytes_equals_the_documented_formula(void)
     TEST_ASSERT_TRUE(r.gouraud >= 24 && r.gouraud <= 256);
     for (n = 0; n < 2000; n++) {
         zl_frame_config c;
-        size_t want, got;
+        uint32_t want, got;
         memset(&c, 0, sizeof c);
         c.width = (uint16_t)zt_rand_range(&rng, 1, 800);
         c.height = (uint16_t)zt_rand_range(&rng, 1, 600);
@@ -133,8 +146,8 @@ static void test_frame_bytes_equals_the_documented_formula(void)
         /* the pool doubles as a 4-byte-per-row table while planning: keep it
          * the larger, as the formula above assumes */
         c.max_active = (uint32_t)zt_rand_range(&rng, (int32_t)(4u * (c.height + 1u) / r.active + 1u), 65534);
-        want = documented_bytes(&c, &r);
-        got = zl_frame_bytes(&c);
+        want = expected_bytes(documented_bytes(&c, &r));
+        got = (uint32_t)zl_frame_bytes(&c);
         if (want != got) {
             char msg[200];
             snprintf(msg, sizeof msg,
@@ -149,10 +162,41 @@ static void test_frame_bytes_equals_the_documented_formula(void)
     }
 }
 
+/* A work buffer larger than SIZE_MAX cannot exist: zl_frame_bytes and
+ * zl_vis_bytes return 0 (and the begin calls, which use the same layout,
+ * refuse the configuration), never the size wrapped to a small one that a
+ * buffer could have. 65000 cached vertices take at least 8 bytes each
+ * (520000 bytes): beyond a 16-bit size_t (AVR), within any wider one. */
+static void test_sizes_beyond_size_max_are_refused(void)
+{
+    zl_frame_config c;
+    zl_vis_config v;
+    int too_large = (uint64_t)SIZE_MAX < UINT64_C(520000);
+    base_config(&c);
+    c.max_vertices = 65000;
+    if (too_large)
+        TEST_ASSERT_EQUAL_UINT_MESSAGE(0, zl_frame_bytes(&c), "zl_frame_bytes beyond SIZE_MAX");
+    else
+        TEST_ASSERT_GREATER_OR_EQUAL(520000, zl_frame_bytes(&c));
+    memset(&v, 0, sizeof v);
+    v.width = 64;
+    v.height = 48;
+    v.algorithm = ZL_VIS_PAINTER;
+    v.format = ZL_FORMAT_RGB565;
+    v.max_meshes = 1;
+    v.max_vertices = 65000;
+    v.max_triangles = 64;
+    if (too_large)
+        TEST_ASSERT_EQUAL_UINT_MESSAGE(0, zl_vis_bytes(&v), "zl_vis_bytes beyond SIZE_MAX");
+    else
+        TEST_ASSERT_GREATER_OR_EQUAL(520000, zl_vis_bytes(&v));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_each_triangle_costs_two_bytes_and_each_vertex_twelve);
     RUN_TEST(test_frame_bytes_equals_the_documented_formula);
+    RUN_TEST(test_sizes_beyond_size_max_are_refused);
     return UNITY_END();
 }

@@ -9,6 +9,7 @@
 
 #include "unity.h"
 #include "zline/zline.h"
+#include "zt_target.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -43,7 +44,7 @@ static void test_near_far_monotonic_formula(void)
  * and return the depth stored at the centre pixel. */
 static uint16_t pipeline_depth(zl_fixed dist, const zl_mat4 *proj)
 {
-    static uint16_t depth[8 * 8];
+    static uint16_t depth[8 * 8] ZT_ALIGNED(2);
     zl_target t;
     zl_context ctx;
     zl_rgb black = {0, 0, 0};
@@ -75,7 +76,7 @@ static void test_pipeline_agrees_with_formula(void)
     unsigned i;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_mat4_perspective(&proj, 16384, ZL_FX_ONE, N_NEAR, N_FAR));
     for (i = 0; i < sizeof dists_q8 / sizeof dists_q8[0]; i++) {
-        zl_fixed z = dists_q8[i] * 256;
+        zl_fixed z = (zl_fixed)dists_q8[i] * 256; /* zl_fixed: int may have 16 bits */
         uint16_t got = pipeline_depth(z, &proj);
         /* The matrix holds A and B rounded to Q16.16: allow 2 steps. */
         TEST_ASSERT_INT_WITHIN(2, zl_depth_of_distance(N_NEAR, N_FAR, z), got);

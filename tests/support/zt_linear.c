@@ -2,7 +2,11 @@
 /* Linear algebra for the tests' references (zt_linear.h). */
 #include "zt_linear.h"
 
-#include <math.h>
+/* |v| without fabsl, which avr-libc does not have (the suite on the ATmega2560). */
+static long double magnitude(long double v)
+{
+    return v < 0 ? -v : v;
+}
 
 static void swap_rows(long double a[3][3], long double r[3], int i, int p)
 {
@@ -24,7 +28,7 @@ int zt_solve3(long double a[3][3], long double r[3], long double x[3])
     for (i = 0; i < 3; i++) {
         int p = i;
         for (j = i + 1; j < 3; j++)
-            if (fabsl(a[j][i]) > fabsl(a[p][i]))
+            if (magnitude(a[j][i]) > magnitude(a[p][i]))
                 p = j;
         if (a[p][i] == 0)
             return 0;

@@ -14,6 +14,39 @@ static struct {
     jmp_buf abort_frame;
 } U;
 
+/* 64-bit numbers as text without printf's %lld and %llX, which avr-libc's
+ * printf does not have (the suite on the ATmega2560, port/avr). */
+typedef struct {
+    char text[24];
+} number_text;
+
+static number_text unsigned_text(uint64_t v, unsigned base)
+{
+    static const char digits[] = "0123456789ABCDEF";
+    char reversed[24];
+    number_text out;
+    size_t n = 0, i;
+    do {
+        reversed[n++] = digits[v % base];
+        v /= base;
+    } while (v != 0);
+    for (i = 0; i < n; i++)
+        out.text[i] = reversed[n - 1 - i];
+    out.text[n] = '\0';
+    return out;
+}
+
+static number_text signed_text(int64_t v)
+{
+    number_text out;
+    /* the magnitude in unsigned arithmetic: -INT64_MIN does not exist */
+    uint64_t magnitude = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+    number_text digits = unsigned_text(magnitude, 10u);
+    out.text[0] = '-';
+    memcpy(out.text + (v < 0), digits.text, strlen(digits.text) + 1u);
+    return out;
+}
+
 static void print_location(int line)
 {
     printf("%s:%d:%s:", U.file, line, U.test ? U.test : "");
@@ -89,7 +122,7 @@ void UnityAssertEqualInt(int64_t expected, int64_t actual, const char *msg, int 
     char buf[96];
     if (expected == actual)
         return;
-    snprintf(buf, sizeof buf, "Expected %lld Was %lld", (long long)expected, (long long)actual);
+    snprintf(buf, sizeof buf, "Expected %s Was %s", signed_text(expected).text, signed_text(actual).text);
     fail_now(line, buf, msg);
 }
 
@@ -98,12 +131,8 @@ void UnityAssertEqualUint(uint64_t expected, uint64_t actual, const char *msg, i
     char buf[96];
     if (expected == actual)
         return;
-    if (hex)
-        snprintf(buf, sizeof buf, "Expected 0x%llX Was 0x%llX", (unsigned long long)expected,
-                 (unsigned long long)actual);
-    else
-        snprintf(buf, sizeof buf, "Expected %llu Was %llu", (unsigned long long)expected,
-                 (unsigned long long)actual);
+    snprintf(buf, sizeof buf, hex ? "Expected 0x%s Was 0x%s" : "Expected %s Was %s",
+             unsigned_text(expected, hex ? 16u : 10u).text, unsigned_text(actual, hex ? 16u : 10u).text);
     fail_now(line, buf, msg);
 }
 
@@ -113,8 +142,8 @@ void UnityAssertWithin(int64_t delta, int64_t expected, int64_t actual, const ch
     int64_t diff = actual > expected ? actual - expected : expected - actual;
     if (diff <= delta)
         return;
-    snprintf(buf, sizeof buf, "Values Not Within Delta %lld. Expected %lld Was %lld", (long long)delta,
-             (long long)expected, (long long)actual);
+    snprintf(buf, sizeof buf, "Values Not Within Delta %s. Expected %s Was %s", signed_text(delta).text,
+             signed_text(expected).text, signed_text(actual).text);
     fail_now(line, buf, msg);
 }
 
@@ -127,8 +156,8 @@ void UnityAssertCompare(int64_t threshold, int64_t actual, int op, const char *m
              (op == 3 && actual >= threshold) || (op == 4 && actual <= threshold);
     if (ok)
         return;
-    snprintf(buf, sizeof buf, "Expected %s %lld Was %lld", names[op], (long long)threshold,
-             (long long)actual);
+    snprintf(buf, sizeof buf, "Expected %s %s Was %s", names[op], signed_text(threshold).text,
+             signed_text(actual).text);
     fail_now(line, buf, msg);
 }
 

@@ -30,36 +30,62 @@
 
 #include "zl_frame_internal.h"
 
+/* n rounded up to a multiple of 8, in 32 bits (zl_frame_layout). */
+static uint32_t align8_32(uint32_t n)
+{
+    return (n + 7u) & ~UINT32_C(7);
+}
+
 /* Offsets of every region of the work buffer. The one place that decides
- * sizes, so zl_frame_bytes is exact by construction. */
+ * sizes, so zl_frame_bytes is exact by construction. Summed in 32 bits, which
+ * hold every configuration's total (under 2^28 bytes): where size_t has 16
+ * bits (AVR) a size_t sum would wrap, and a buffer of the wrapped size would
+ * pass zl_frame_begin with regions overlapping. A total beyond SIZE_MAX is
+ * refused (0), as no buffer of that size can exist. */
 int zl_frame_layout(const zl_frame_config *c, layout *l)
 {
-    size_t bpp = zl_format_bytes((zl_format)c->format);
-    size_t pool, gouraud, diff, band_px;
+    uint32_t bpp = (uint32_t)zl_format_bytes((zl_format)c->format);
+    uint32_t pool, gouraud, diff, band_px, o[12];
     if (c->width < 1 || c->height < 1 || c->width > ZL_MAX_DIM || c->height > ZL_MAX_DIM || bpp == 0 ||
         c->band_rows < 1 || c->band_rows > c->height || c->color_buffers < 1 || c->color_buffers > 2 ||
         c->max_meshes < 1 || c->max_meshes > 255 || c->max_triangles > 65535 || c->max_active < 1 ||
-        c->max_active > 65534 || c->max_vertices > 65535u * 255u || c->parts > 2)
-        return 0;
-    band_px = (size_t)c->width * c->band_rows;
-    pool = (size_t)c->max_active * sizeof(zl_active);
-    gouraud = c->gouraud ? (size_t)c->max_active * sizeof(zl_gouraud) : 0;
+        c->max_active > 65534 || c->max_vertices > UINT32_C(65535) * 255u || c->parts > 2)
+        return 0; /* (65535u * 255u wraps where unsigned has 16 bits) */
+    band_px = (uint32_t)c->width * c->band_rows;
+    pool = (uint32_t)c->max_active * (uint32_t)sizeof(zl_active);
+    gouraud = c->gouraud ? (uint32_t)c->max_active * (uint32_t)sizeof(zl_gouraud) : 0;
     /* Planning borrows the pool for a difference array of int32 per row. */
-    diff = ((size_t)c->height + 1) * sizeof(int32_t);
-    l->meshes = 0;
-    l->vcache = l->meshes + ALIGN8((size_t)c->max_meshes * sizeof(zl_frame_mesh));
-    l->row_start = l->vcache + ALIGN8((size_t)c->max_vertices * sizeof(zl_cached_vertex));
-    l->visible = l->row_start + ALIGN8(((size_t)c->height + 1) * sizeof(uint16_t));
-    l->pool = l->visible + ALIGN8((size_t)c->max_triangles * sizeof(uint16_t));
-    l->gouraud = l->pool + ALIGN8(pool);
-    if (ALIGN8(pool) + gouraud < diff)
-        gouraud = diff - ALIGN8(pool);
-    l->ext = l->gouraud + ALIGN8(gouraud);
-    l->tex = l->ext + (c->styled ? ALIGN8((size_t)c->max_meshes * sizeof(zl_frame_ext)) : 0);
-    l->depth = l->tex + (c->textured ? ALIGN8((size_t)c->max_active * sizeof(zl_texplanes)) : 0);
-    l->color0 = l->depth + ALIGN8(band_px * 2);
-    l->color1 = l->color0 + ALIGN8(band_px * bpp);
-    l->total = l->color1 + (c->color_buffers == 2 ? ALIGN8(band_px * bpp) : 0);
+    diff = ((uint32_t)c->height + 1u) * (uint32_t)sizeof(int32_t);
+    o[0] = 0; /* meshes */
+    o[1] = o[0] + align8_32((uint32_t)c->max_meshes * (uint32_t)sizeof(zl_frame_mesh));
+    o[2] = o[1] + align8_32((uint32_t)c->max_vertices * (uint32_t)sizeof(zl_cached_vertex));
+    o[3] = o[2] + align8_32(((uint32_t)c->height + 1u) * (uint32_t)sizeof(uint16_t));
+    o[4] = o[3] + align8_32((uint32_t)c->max_triangles * (uint32_t)sizeof(uint16_t));
+    o[5] = o[4] + align8_32(pool);
+    if (align8_32(pool) + gouraud < diff)
+        gouraud = diff - align8_32(pool);
+    o[6] = o[5] + align8_32(gouraud);
+    o[7] = o[6] + (c->styled ? align8_32((uint32_t)c->max_meshes * (uint32_t)sizeof(zl_frame_ext)) : 0);
+    o[8] = o[7] + (c->textured ? align8_32((uint32_t)c->max_active * (uint32_t)sizeof(zl_texplanes)) : 0);
+    o[9] = o[8] + align8_32(band_px * 2u);
+    o[10] = o[9] + align8_32(band_px * bpp);
+    o[11] = o[10] + (c->color_buffers == 2 ? align8_32(band_px * bpp) : 0);
+#if SIZE_MAX < UINT32_MAX
+    if (o[11] > SIZE_MAX)
+        return 0;
+#endif
+    l->meshes = (size_t)o[0];
+    l->vcache = (size_t)o[1];
+    l->row_start = (size_t)o[2];
+    l->visible = (size_t)o[3];
+    l->pool = (size_t)o[4];
+    l->gouraud = (size_t)o[5];
+    l->ext = (size_t)o[6];
+    l->tex = (size_t)o[7];
+    l->depth = (size_t)o[8];
+    l->color0 = (size_t)o[9];
+    l->color1 = (size_t)o[10];
+    l->total = (size_t)o[11];
     return 1;
 }
 

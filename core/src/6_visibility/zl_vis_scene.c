@@ -16,66 +16,83 @@
 
 #include "zl_vis_internal.h"
 
-#define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
-
 typedef struct {
     size_t vcache, visible, row_start, keys, pool, edges, act, free_slots, flags, inset, color, ids,
         gap, total;
 } layout;
 
+/* The layout is summed in 32 bits, which hold every configuration's total:
+ * where size_t has 16 bits (AVR) a size_t sum would wrap, and a buffer of the
+ * wrapped size would pass zl_vis_begin with regions overlapping. */
+static uint32_t align8_32(uint32_t n)
+{
+    return (n + 7u) & ~UINT32_C(7);
+}
+
+/* A total beyond SIZE_MAX is refused: no buffer of that size can exist. */
+static int fits_size_t(uint32_t total)
+{
+#if SIZE_MAX < UINT32_MAX
+    return total <= SIZE_MAX;
+#else
+    (void)total;
+    return 1;
+#endif
+}
+
 static int layout_of(const zl_vis_config *c, layout *l)
 {
-    size_t bpp = zl_format_bytes((zl_format)c->format), pool = 0, diff, at;
+    uint32_t bpp = (uint32_t)zl_format_bytes((zl_format)c->format), pool = 0, diff, at;
     int rows = c->algorithm == ZL_VIS_AET || c->algorithm == ZL_VIS_RAYCAST;
     if (c->width < 1 || c->height < 1 || c->width > ZL_MAX_DIM || c->height > ZL_MAX_DIM || bpp == 0 ||
         c->algorithm < ZL_VIS_AET || c->algorithm > ZL_VIS_RAYCAST || c->max_meshes < 1 || c->max_meshes > 255 ||
-        c->max_triangles > 65535 || c->max_vertices > 65535u * 255u || (rows && (c->max_active < 1 || c->max_active > 65534)))
+        c->max_triangles > 65535 || c->max_vertices > UINT32_C(65535) * 255u || (rows && (c->max_active < 1 || c->max_active > 65534)))
         return 0;
     memset(l, 0, sizeof *l);
-    diff = ((size_t)c->height + 1) * sizeof(int32_t);
+    diff = ((uint32_t)c->height + 1) * (uint32_t)sizeof(int32_t);
     if (c->algorithm == ZL_VIS_AET)
-        pool = (size_t)c->max_active * sizeof(zl_active);
+        pool = (uint32_t)c->max_active * (uint32_t)sizeof(zl_active);
     else if (c->algorithm == ZL_VIS_RAYCAST)
-        pool = (size_t)c->max_active * sizeof(zl_vis_rtri);
+        pool = (uint32_t)c->max_active * (uint32_t)sizeof(zl_vis_rtri);
     if (rows && pool < diff)
         pool = diff; /* planning borrows the pool for its difference array */
-    at = ALIGN8((size_t)c->max_meshes * sizeof(zl_vis_mesh));
-    l->vcache = at;
-    at += ALIGN8((size_t)c->max_vertices * sizeof(zl_cached_vertex));
-    l->visible = at;
-    at += ALIGN8((size_t)c->max_triangles * sizeof(uint16_t));
+    at = align8_32((uint32_t)c->max_meshes * (uint32_t)sizeof(zl_vis_mesh));
+    l->vcache = (size_t)at;
+    at += align8_32((uint32_t)c->max_vertices * (uint32_t)sizeof(zl_cached_vertex));
+    l->visible = (size_t)at;
+    at += align8_32((uint32_t)c->max_triangles * (uint32_t)sizeof(uint16_t));
     if (c->algorithm == ZL_VIS_PAINTER) {
-        l->keys = at;
-        at += ALIGN8((size_t)c->max_triangles * sizeof(uint32_t));
-        l->total = at;
-        return 1;
+        l->keys = (size_t)at;
+        at += align8_32((uint32_t)c->max_triangles * (uint32_t)sizeof(uint32_t));
+        l->total = (size_t)at;
+        return fits_size_t(at);
     }
-    l->row_start = at;
-    at += ALIGN8(((size_t)c->height + 1) * sizeof(uint16_t));
-    l->pool = at;
-    at += ALIGN8(pool);
+    l->row_start = (size_t)at;
+    at += align8_32(((uint32_t)c->height + 1) * (uint32_t)sizeof(uint16_t));
+    l->pool = (size_t)at;
+    at += align8_32(pool);
     if (c->algorithm == ZL_VIS_AET) {
-        l->edges = at;
-        at += ALIGN8((size_t)c->max_active * 2 * sizeof(zl_vis_edge));
-        l->act = at;
-        at += ALIGN8((size_t)c->max_active * sizeof(uint16_t));
-        l->free_slots = at;
-        at += ALIGN8((size_t)c->max_active * sizeof(uint16_t));
-        l->inset = at;
-        at += ALIGN8((size_t)c->max_active * sizeof(uint16_t));
-        l->flags = at;
-        at += ALIGN8((size_t)c->max_active);
+        l->edges = (size_t)at;
+        at += align8_32((uint32_t)c->max_active * 2 * (uint32_t)sizeof(zl_vis_edge));
+        l->act = (size_t)at;
+        at += align8_32((uint32_t)c->max_active * (uint32_t)sizeof(uint16_t));
+        l->free_slots = (size_t)at;
+        at += align8_32((uint32_t)c->max_active * (uint32_t)sizeof(uint16_t));
+        l->inset = (size_t)at;
+        at += align8_32((uint32_t)c->max_active * (uint32_t)sizeof(uint16_t));
+        l->flags = (size_t)at;
+        at += align8_32((uint32_t)c->max_active);
     }
-    l->ids = at;
-    at += ALIGN8((size_t)c->width * sizeof(uint16_t));
+    l->ids = (size_t)at;
+    at += align8_32((uint32_t)c->width * (uint32_t)sizeof(uint16_t));
     if (c->algorithm == ZL_VIS_RAYCAST) {
-        l->gap = at;
-        at += ALIGN8((size_t)c->width * sizeof(uint16_t));
+        l->gap = (size_t)at;
+        at += align8_32((uint32_t)c->width * (uint32_t)sizeof(uint16_t));
     }
-    l->color = at;
-    at += ALIGN8((size_t)c->width * bpp);
-    l->total = at;
-    return 1;
+    l->color = (size_t)at;
+    at += align8_32((uint32_t)c->width * bpp);
+    l->total = (size_t)at;
+    return fits_size_t(at);
 }
 
 size_t zl_vis_bytes(const zl_vis_config *cfg)
