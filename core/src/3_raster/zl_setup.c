@@ -610,8 +610,8 @@ void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const 
         plane_setup(&g->c[1], &pf, (int64_t)v[0]->g * 256, (int64_t)v[1]->g * 256, (int64_t)v[2]->g * 256);
         plane_setup(&g->c[2], &pf, (int64_t)v[0]->b * 256, (int64_t)v[1]->b * 256, (int64_t)v[2]->b * 256);
     }
-    if (tp != NULL && zl_style_needs_planes(sty)) {
-        int16_t fr[6];
+    if ((ZL_FEATURE_TEXTURES || ZL_FEATURE_BLEND) && tp != NULL && zl_style_needs_planes(sty)) {
+        int16_t fr[6]; /* compiled out with both features (zl_config.h) */
         for (k = 0; k < 3 && res != NULL; k++) {
             unsigned i = v[k] == a ? 0u : (v[k] == b ? 2u : 4u);
             fr[2 * k] = res[i];
