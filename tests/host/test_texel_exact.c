@@ -265,6 +265,15 @@ static int reference(int i, int j, int affine, candidates *cd)
     cd->n = 0;
     for (t = 0; t < NT && cd->n < MAX_CAND; t++) {
         long double b[3], w_px;
+        const tri_ref *f = &refs[t];
+        unsigned r;
+        int far_off = 0;
+        for (r = 0; r < 3; r++) { /* b moves by at most this within 1/16 pixel on an axis: skip the far ones */
+            long double bc = f->inv[r][0] * (2 * cx / W - 1) + f->inv[r][1] * (1 - 2 * cy / H) + f->inv[r][2];
+            far_off |= bc < -(fabsl(f->inv[r][0]) * 2 / W + fabsl(f->inv[r][1]) * 2 / H) / 8;
+        }
+        if (far_off || !f->ok)
+            continue;
         for (p = 0; p < 5; p++)
             if (covers(&refs[t], 2 * (cx + off[p][0]) / W - 1, 1 - 2 * (cy + off[p][1]) / H, b))
                 break;

@@ -385,8 +385,8 @@ static int fine_frame_init(fine_frame *ff, const zl_wvert *const *v, const int16
     ff->s = (int)bits64(ac) - 32;
     ff->c32 = ff->s >= 0 ? (uint32_t)(ac >> ff->s) : (uint32_t)(ac << -ff->s);
     zl_div_inv_init(&ff->inv, ff->c32);
-    ff->ox = (pf->ox << ZL_FINE_BITS) - (x[0] - (int64_t)v[0]->x * (1 << ZL_FINE_BITS));
-    ff->oy = (pf->oy << ZL_FINE_BITS) - (y[0] - (int64_t)v[0]->y * (1 << ZL_FINE_BITS));
+    ff->ox = pf->ox * (1 << ZL_FINE_BITS) - (x[0] - (int64_t)v[0]->x * (1 << ZL_FINE_BITS));
+    ff->oy = pf->oy * (1 << ZL_FINE_BITS) - (y[0] - (int64_t)v[0]->y * (1 << ZL_FINE_BITS));
     ff->rows = pf->first - pf->ay;
     return 1;
 }
@@ -450,15 +450,15 @@ static void tex_planes_snapped(zl_texplanes *tp, const zl_style *sty, const zl_t
 {
     int64_t a[3];
     int k, persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
-    plane_setup(&tp->q, pf, (q[0] + 8) >> 4, (q[1] + 8) >> 4, (q[2] + 8) >> 4);
+    plane_setup(&tp->q, pf, zl_floor_shift64(q[0] + 8, 4), zl_floor_shift64(q[1] + 8, 4), zl_floor_shift64(q[2] + 8, 4));
     if (sty->texture != NULL && sty->texcoords != NULL) {
         tex_values(a, tpoly->u, idx, q, persp);
         for (k = 0; k < 3 && persp; k++)
-            a[k] = (a[k] + 8) >> 4;
+            a[k] = zl_floor_shift64(a[k] + 8, 4);
         plane_setup(&tp->u, pf, a[0], a[1], a[2]);
         tex_values(a, tpoly->v, idx, q, persp);
         for (k = 0; k < 3 && persp; k++)
-            a[k] = (a[k] + 8) >> 4;
+            a[k] = zl_floor_shift64(a[k] + 8, 4);
         plane_setup(&tp->v, pf, a[0], a[1], a[2]);
     }
 }
