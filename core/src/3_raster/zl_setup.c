@@ -342,47 +342,161 @@ int zl_style_needs_planes(const zl_style *sty)
            ((sty->texture != NULL && sty->texcoords != NULL) || sty->persp_gouraud || sty->blend != ZL_BLEND_OFF);
 }
 
+/*
+ * The frame of the texture planes through a triangle's vertices at their
+ * unsnapped positions (issue 22: texels exact), in fine units (2^-16
+ * pixel) as zl_depth_plane_exact's: one reciprocal of the cross product
+ * for all of a triangle's texture planes. Vertices without residuals take
+ * their snapped positions (residual 0), which still gains the planes' exact
+ * gradients of the Q20 vertex values.
+ */
+typedef struct {
+    int64_t dx1, dy1, dx2, dy2; /* edge vectors from v0, fine units (below 2^29.1) */
+    int64_t ox, oy;             /* the anchor pixel's centre from v0, fine units */
+    int32_t rows;               /* first - ay */
+    uint32_t c32;               /* |c| = c32 2^s, c32 in [2^31, 2^32) */
+    int s, neg;
+    zl_div_inv inv;
+} fine_frame;
+
+/* fine_frame of the sorted vertices v with residuals fr (fx, fy of v[k] at
+ * 2k, 2k + 1; NULL: none); 0 when it cannot take them (an edge of 8192
+ * pixels or more, or degenerate): then the snapped plane_setup. */
+static int fine_frame_init(fine_frame *ff, const zl_wvert *const *v, const int16_t *fr, const plane_frame *pf)
+{
+    int64_t x[3], y[3], c;
+    uint64_t ac;
+    int k;
+    if (!pf->small || pf->c == 0)
+        return 0;
+    for (k = 0; k < 3; k++) {
+        x[k] = (int64_t)v[k]->x * (1 << ZL_FINE_BITS) + (fr != NULL ? fr[2 * k] : 0);
+        y[k] = (int64_t)v[k]->y * (1 << ZL_FINE_BITS) + (fr != NULL ? fr[2 * k + 1] : 0);
+    }
+    ff->dx1 = x[1] - x[0];
+    ff->dy1 = y[1] - y[0];
+    ff->dx2 = x[2] - x[0];
+    ff->dy2 = y[2] - y[0];
+    c = ff->dx1 * ff->dy2 - ff->dx2 * ff->dy1;
+    if (c == 0)
+        return 0;
+    ff->neg = c < 0;
+    ac = (uint64_t)(c < 0 ? -c : c);
+    ff->s = (int)bits64(ac) - 32;
+    ff->c32 = ff->s >= 0 ? (uint32_t)(ac >> ff->s) : (uint32_t)(ac << -ff->s);
+    zl_div_inv_init(&ff->inv, ff->c32);
+    ff->ox = pf->ox * (1 << ZL_FINE_BITS) - (x[0] - (int64_t)v[0]->x * (1 << ZL_FINE_BITS));
+    ff->oy = pf->oy * (1 << ZL_FINE_BITS) - (y[0] - (int64_t)v[0]->y * (1 << ZL_FINE_BITS));
+    ff->rows = pf->first - pf->ay;
+    return 1;
+}
+
+/* The Q20 plane through values a0, a1, a2 of `frac` fraction bits (16 or
+ * 20, below 2^30) at the vertices of ff: gradients rounded once from the
+ * exact quotients (zl_depth_plane_exact's), the anchor value rounded once. */
+static void fine_plane(zl_attr *at, const fine_frame *ff, int64_t a0, int64_t a1, int64_t a2, int frac)
+{
+    int64_t d1 = a1 - a0, d2 = a2 - a0;
+    int64_t ga = d1 * ff->dy2 - d2 * ff->dy1, gb = ff->dx1 * d2 - ff->dx2 * d1;
+    const int k = ZL_SUB_BITS + ZL_FINE_BITS + (ZL_ATTR_FRAC - frac) - ff->s;
+    if (ff->neg) {
+        ga = -ga;
+        gb = -gb;
+    }
+    at->dx = scaled_quotient(ga, &ff->inv, ff->c32, k);
+    at->dy = scaled_quotient(gb, &ff->inv, ff->c32, k);
+    at->row = a0 * (1 << (ZL_ATTR_FRAC - frac)) +
+              zl_floor_shift64(at->dx * ff->ox + at->dy * ff->oy + ((int64_t)1 << (ZL_SUB_BITS + ZL_FINE_BITS - 1)),
+                               ZL_SUB_BITS + ZL_FINE_BITS) +
+              (int64_t)ff->rows * at->dy;
+}
+
+/* The vertex values of texture coordinate c (tpoly->u or ->v, 1/256
+ * texel) for the planes: Q16 as they are (affine), or u q / 2^24 in Q20
+ * from q in Q20 (perspective). */
+static void tex_values(int64_t *a, const int32_t *c, const size_t *idx, const int64_t *q, int persp)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        a[k] = persp ? zl_floor_shift64(c[idx[k]] * q[k] + ((int64_t)1 << 23), 24) : c[idx[k]];
+}
+
+/* The q, u and v planes through the unsnapped vertices (fr: residuals, or
+ * NULL for the snapped positions); 0 when fine_frame_init cannot take the
+ * triangle. Out of line, so that its frame is not on the stack of the
+ * snapped path's divisions (Cortex-M0's stack bound). */
+static ZL_NOINLINE int tex_planes_fine(zl_texplanes *tp, const zl_style *sty, const zl_wvert *const *v,
+                                       const zl_tpoly *tpoly, const size_t *idx, const int64_t *q, const int16_t *fr,
+                                       const plane_frame *pf)
+{
+    fine_frame ff;
+    int64_t a[3];
+    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
+    if (!fine_frame_init(&ff, v, fr, pf))
+        return 0;
+    fine_plane(&tp->q, &ff, q[0], q[1], q[2], 20);
+    if (sty->texture != NULL && sty->texcoords != NULL) {
+        tex_values(a, tpoly->u, idx, q, persp);
+        fine_plane(&tp->u, &ff, a[0], a[1], a[2], persp ? 20 : 16);
+        tex_values(a, tpoly->v, idx, q, persp);
+        fine_plane(&tp->v, &ff, a[0], a[1], a[2], persp ? 20 : 16);
+    }
+    return 1;
+}
+
+/* The same through the snapped vertices (plane_setup: Q16 values). */
+static void tex_planes_snapped(zl_texplanes *tp, const zl_style *sty, const zl_tpoly *tpoly, const size_t *idx,
+                               const int64_t *q, const plane_frame *pf)
+{
+    int64_t a[3];
+    int k, persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
+    plane_setup(&tp->q, pf, zl_floor_shift64(q[0] + 8, 4), zl_floor_shift64(q[1] + 8, 4), zl_floor_shift64(q[2] + 8, 4));
+    if (sty->texture != NULL && sty->texcoords != NULL) {
+        tex_values(a, tpoly->u, idx, q, persp);
+        for (k = 0; k < 3 && persp; k++)
+            a[k] = zl_floor_shift64(a[k] + 8, 4);
+        plane_setup(&tp->u, pf, a[0], a[1], a[2]);
+        tex_values(a, tpoly->v, idx, q, persp);
+        for (k = 0; k < 3 && persp; k++)
+            a[k] = zl_floor_shift64(a[k] + 8, 4);
+        plane_setup(&tp->v, pf, a[0], a[1], a[2]);
+    }
+}
+
 /* Texture and perspective planes (see zl_texplanes). q_k = 2^24 wmin / w_k:
- * 1/w up to a per-triangle scale, which cancels in (u q) / q. */
+ * 1/w up to a per-triangle scale, which cancels in (u q) / q. The vertex
+ * values of q and u q are kept to Q20 (4 bits more than the Q16 the planes
+ * take elsewhere) and the planes go through the unsnapped vertices (fr:
+ * their residuals, or NULL), so that the texel is exact but within 1/64
+ * texel of a boundary (zline.h, TEXTURES). */
 static void tex_setup(zl_texplanes *tp, zl_gouraud *g, const zl_style *sty, const zl_wvert *const *v,
-                      const zl_poly *poly, const plane_frame *pf, const zl_state *st)
+                      const zl_poly *poly, const plane_frame *pf, const zl_state *st, const int16_t *fr)
 {
     /* poly is the p of a zl_tpoly (zl_tri_setup_ex's contract): the
      * attributes of vertex v[k] are at its index in poly->v. */
     const zl_tpoly *tpoly = (const zl_tpoly *)(const void *)poly;
-    int64_t q[3], a[3], b[3], u[3], vv[3], w[3], wmin;
-    int k, persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
+    int64_t q[3], a[3], wmin;
+    size_t idx[3];
+    int k, ch;
+    for (k = 0; k < 3; k++)
+        idx[k] = (size_t)(v[k] - poly->v);
+    wmin = tpoly->w[idx[0]] < tpoly->w[idx[1]] ? tpoly->w[idx[0]] : tpoly->w[idx[1]];
+    wmin = wmin < tpoly->w[idx[2]] ? wmin : tpoly->w[idx[2]];
     for (k = 0; k < 3; k++) {
-        size_t i = (size_t)(v[k] - poly->v);
-        u[k] = tpoly->u[i];
-        vv[k] = tpoly->v[i];
-        w[k] = tpoly->w[i];
+        q[k] = zl_round_div64(wmin << 28, tpoly->w[idx[k]]); /* Q20 */
+        if (q[k] < 4096)
+            q[k] = 4096; /* a w ratio beyond 2^16 inside one triangle */
     }
-    wmin = w[0] < w[1] ? w[0] : w[1];
-    wmin = wmin < w[2] ? wmin : w[2];
-    for (k = 0; k < 3; k++) {
-        q[k] = zl_round_div64(wmin << 24, w[k]);
-        if (q[k] < 256)
-            q[k] = 256; /* a w ratio beyond 2^16 inside one triangle */
-    }
-    plane_setup(&tp->q, pf, q[0], q[1], q[2]);
     tp->persp = 0;
     memset(&tp->u, 0, sizeof tp->u);
     memset(&tp->v, 0, sizeof tp->v);
-    if (sty->texture != NULL && sty->texcoords != NULL) {
-        for (k = 0; k < 3; k++) {
-            a[k] = persp ? zl_floor_shift64(u[k] * q[k] + ((int64_t)1 << 23), 24) : u[k];
-            b[k] = persp ? zl_floor_shift64(vv[k] * q[k] + ((int64_t)1 << 23), 24) : vv[k];
-        }
-        plane_setup(&tp->u, pf, a[0], a[1], a[2]);
-        plane_setup(&tp->v, pf, b[0], b[1], b[2]);
-    }
+    if (!tex_planes_fine(tp, sty, v, tpoly, idx, q, fr, pf))
+        tex_planes_snapped(tp, sty, tpoly, idx, q, pf);
     if (g != NULL && sty->persp_gouraud && st->shading == ZL_SHADE_GOURAUD) {
-        int ch;
         for (ch = 0; ch < 3; ch++) {
             for (k = 0; k < 3; k++) {
                 int64_t cq = ch == 0 ? v[k]->r : (ch == 1 ? v[k]->g : v[k]->b);
-                a[k] = zl_floor_shift64(cq * 256 * q[k] + ((int64_t)1 << 23), 24);
+                a[k] = zl_floor_shift64(cq * 256 * q[k] + ((int64_t)1 << 27), 28);
             }
             plane_setup(&g->c[ch], pf, a[0], a[1], a[2]);
         }
@@ -496,8 +610,15 @@ void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const 
         plane_setup(&g->c[1], &pf, (int64_t)v[0]->g * 256, (int64_t)v[1]->g * 256, (int64_t)v[2]->g * 256);
         plane_setup(&g->c[2], &pf, (int64_t)v[0]->b * 256, (int64_t)v[1]->b * 256, (int64_t)v[2]->b * 256);
     }
-    if (tp != NULL && zl_style_needs_planes(sty))
-        tex_setup(tp, g, sty, v, poly, &pf, st);
+    if ((ZL_FEATURE_TEXTURES || ZL_FEATURE_BLEND) && tp != NULL && zl_style_needs_planes(sty)) {
+        int16_t fr[6]; /* compiled out with both features (zl_config.h) */
+        for (k = 0; k < 3 && res != NULL; k++) {
+            unsigned i = v[k] == a ? 0u : (v[k] == b ? 2u : 4u);
+            fr[2 * k] = res[i];
+            fr[2 * k + 1] = res[i + 1];
+        }
+        tex_setup(tp, g, sty, v, poly, &pf, st, res != NULL ? fr : NULL);
+    }
 }
 
 /* Q16 value (stored scale) of a Q20 plane anchored at the centre of pixel
