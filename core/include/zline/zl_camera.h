@@ -57,7 +57,8 @@ zl_status zl_camera_mvp(const zl_camera *cam, const zl_mat4 *model, zl_mat4 *mvp
  * perspective camera; 0, 0 for an orthographic one). */
 void zl_camera_apply_depth(const zl_camera *cam, zl_state *st);
 
-/* zl_draw_mesh with the camera's matrix for this model and ctx->state's
+/* zl_draw_mesh with the camera's matrix for this model (computed into
+ * ctx->camera_mvp, which stays readable after the draw) and ctx->state's
  * near_z, far_z taken from the camera for this draw (ctx->state is left as
  * it was). Errors as zl_draw_mesh, and ZL_ERR_ARG for a NULL cam. */
 zl_status zl_draw_mesh_camera(zl_context *ctx, const zl_mesh *mesh, const zl_camera *cam, const zl_mat4 *model);

@@ -782,6 +782,9 @@ typedef struct {
      * slower, the same pixels). Library scratch, rewritten by every draw. */
     void *draw_cache;
     size_t draw_cache_bytes;
+    /* Scratch of zl_draw_mesh_camera (zl_camera.h): the matrix of its last
+     * draw, here rather than on the stack under the whole draw. */
+    zl_mat4 camera_mvp;
 } zl_context;
 
 /* Bytes of vertex cache for n vertices (scanline mode uses the same entries). */

@@ -8,6 +8,8 @@
 
 #include <stddef.h>
 
+#include "../1_base/zl_internal.h"
+
 void zl_camera_init(zl_camera *cam)
 {
     if (cam == NULL)
@@ -62,7 +64,9 @@ zl_status zl_camera_look_at(zl_camera *cam, zl_vec3 eye, zl_vec3 target, zl_vec3
     return st;
 }
 
-zl_status zl_camera_mvp(const zl_camera *cam, const zl_mat4 *model, zl_mat4 *mvp)
+/* Out of line: its temporary must not sit in zl_draw_mesh_camera's frame
+ * under the whole draw (the 2048-byte stack bound, CTest stack_bound_*). */
+ZL_NOINLINE zl_status zl_camera_mvp(const zl_camera *cam, const zl_mat4 *model, zl_mat4 *mvp)
 {
     zl_mat4 view_model;
     if (cam == NULL || mvp == NULL)
@@ -86,19 +90,20 @@ void zl_camera_apply_depth(const zl_camera *cam, zl_state *st)
 
 zl_status zl_draw_mesh_camera(zl_context *ctx, const zl_mesh *mesh, const zl_camera *cam, const zl_mat4 *model)
 {
-    zl_mat4 mvp;
     zl_fixed near_z, far_z;
     zl_status st;
     if (ctx == NULL)
         return ZL_ERR_ARG;
-    st = zl_camera_mvp(cam, model, &mvp);
+    /* The matrix goes to the context's scratch: on the stack it would sit
+     * under the whole draw (the 2048-byte bound of CTest stack_bound_*). */
+    st = zl_camera_mvp(cam, model, &ctx->camera_mvp);
     if (st != ZL_OK)
         return st;
     /* The caller's state is borrowed for this draw only. */
     near_z = ctx->state.near_z;
     far_z = ctx->state.far_z;
     zl_camera_apply_depth(cam, &ctx->state);
-    st = zl_draw_mesh(ctx, mesh, &mvp);
+    st = zl_draw_mesh(ctx, mesh, &ctx->camera_mvp);
     ctx->state.near_z = near_z;
     ctx->state.far_z = far_z;
     return st;
