@@ -798,9 +798,26 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  *                  8 x the sum of triangle_count always suffices when
  *                  that is below the cap; zl_frame_needs() gives the exact
  *                  figure of a scene
- * When the submitted scene needs more, the first zl_frame_next_band fails
- * with ZL_ERR_CAPACITY before drawing anything, and zl_frame_needs() tells
- * the capacities it needs.
+ * Over capacity (issue 25): when the submitted scene needs more triangles
+ * or active records than the buffer holds, the frame still comes out
+ * complete and byte-identical, band by band: each band is planned on its own
+ * (only the primitives crossing its rows are kept) and, when even those do
+ * not fit, rendered in passes over consecutive ranges of primitives in
+ * submission order, into the same band colour and depth (every pixel still
+ * sees the primitives in submission order: depth ties and blending as in
+ * frame mode). A pass whose primitives start above the band first walks
+ * their rows without writing. zl_frame_needs() then reports the true needs
+ * and `replans`, the plans made after the first (0 when the scene fitted).
+ * Cost: every plan classifies every primitive again, and every pass walks
+ * the rows above its band of the primitives it keeps: on the host, a
+ * scanline bunny frame over capacity took ~40x the time of the fitting
+ * frame (the figure from tools in tests/test_frame_overcap.c's comment).
+ * ZL_ERR_CAPACITY remains, before any band, only when one primitive alone
+ * does not fit (max_triangles 0, or fewer active records than its pieces:
+ * up to 8 for a clipped triangle, 3 for lines and points of polygon modes),
+ * and for the parts of a split frame (zl_frame_split), which are not planned
+ * again. max_meshes and max_vertices do not depend on the pose: over them
+ * zl_frame_add_mesh fails with ZL_ERR_CAPACITY as before.
  *
  * Order and faults: zl_frame_begin first (a zeroed zl_frame is refused with
  * ZL_ERR_ARG by every other call); meshes, lines and outlines before the
@@ -845,6 +862,9 @@ typedef struct {
 typedef struct {
     uint32_t triangles;   /* visible triangles kept for the frame */
     uint32_t active;      /* bound on triangles crossing one row at once */
+    uint32_t replans;     /* plans after the first: 0 when the scene fitted the
+                             buffer; else one per band and range of primitives
+                             rendered over capacity (see Sizing above) */
 } zl_frame_needs_t;
 
 /* Private bookkeeping; the caller allocates it but never touches it. */
@@ -862,6 +882,7 @@ typedef struct {
     uint8_t part;            /* 0: a whole frame; 1, 2: the first, second part of a split one */
     uint8_t prepared;        /* a part: zl_frame_prepare done */
     uint16_t split_row;      /* a part: the row asked of zl_frame_split (0: balanced) */
+    uint8_t over;            /* over capacity: every band planned on its own (zl_frame_over.c) */
     uint16_t mesh_count;
     uint32_t vertex_count;
     uint32_t triangle_total;

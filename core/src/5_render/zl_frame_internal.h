@@ -86,5 +86,13 @@ int zl_frame_layout(const zl_frame_config *c, layout *l);
 void zl_frame_split_resolve(zl_frame *f);
 /* Planning, on the first band (zl_frame_plan.c). */
 zl_status zl_frame_plan(zl_frame *f);
+/* Row y of the planned records into the row buffers (zl_frame_rows.c). */
+void zl_frame_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow);
+/* Over capacity (zl_frame_over.c): after zl_frame_plan's ZL_ERR_CAPACITY on
+ * a whole frame, check that every primitive fits alone (else
+ * ZL_ERR_CAPACITY) and switch to band plans; then render the next band of
+ * `rows` rows into `color` and the depth band, in slices. */
+zl_status zl_frame_over_begin(zl_frame *f);
+zl_status zl_frame_over_band(zl_frame *f, uint16_t rows, uint8_t *color);
 
 #endif /* ZL_FRAME_INTERNAL_H */

@@ -546,6 +546,11 @@ static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, 
         render_row_lequal(f, y, i, end, crow, zrow);
 }
 
+void zl_frame_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow)
+{
+    render_row(f, y, crow, zrow);
+}
+
 /*
  * The second part of a split frame (zl_frame_split) starts at row next_row,
  * but its triangles crossing that row start above it: the rows above, from
@@ -580,6 +585,8 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
         return ZL_ERR_ARG;
     if (!f->planned) {
         zl_status st = zl_frame_plan(f);
+        if (st == ZL_ERR_CAPACITY && f->part == 0) /* a whole frame: band by band (zl_frame_over.c) */
+            st = zl_frame_over_begin(f);
         if (st != ZL_OK)
             return st;
         f->planned = 1;
@@ -594,22 +601,28 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
     if (rows > f->cfg.band_rows)
         rows = f->cfg.band_rows;
     color = f->color_band[f->band_index];
-    /* The clear colour in the band's format, every channel written (what
-     * zl_fill_color_row does with the default state's span settings). */
-    pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
-    memcpy(&pix16, pix, 2);
-    for (r = 0; r < rows; r++) {
-        uint8_t *crow = color + (size_t)r * w * bpp;
-        uint16_t *zrow = f->depth_band + (size_t)r * w;
-        if (bpp == 2) { /* rows of an 8-byte aligned band, an even number of bytes apart */
-            zl_fill16((uint16_t *)(void *)crow, pix16, w);
-        } else {
-            uint16_t i;
-            for (i = 0; i < w; i++)
-                memcpy(crow + (size_t)i * 3u, pix, 3);
+    if (f->over) { /* over capacity: in slices (zl_frame_over.c) */
+        zl_status st = zl_frame_over_band(f, rows, color);
+        if (st != ZL_OK)
+            return st;
+    } else {
+        /* The clear colour in the band's format, every channel written (what
+         * zl_fill_color_row does with the default state's span settings). */
+        pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
+        memcpy(&pix16, pix, 2);
+        for (r = 0; r < rows; r++) {
+            uint8_t *crow = color + (size_t)r * w * bpp;
+            uint16_t *zrow = f->depth_band + (size_t)r * w;
+            if (bpp == 2) { /* rows of an 8-byte aligned band, an even number of bytes apart */
+                zl_fill16((uint16_t *)(void *)crow, pix16, w);
+            } else {
+                uint16_t i;
+                for (i = 0; i < w; i++)
+                    memcpy(crow + (size_t)i * 3u, pix, 3);
+            }
+            zl_fill16(zrow, f->clear_depth, w);
+            render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
         }
-        zl_fill16(zrow, f->clear_depth, w);
-        render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
     }
     band->first_row = f->next_row;
     band->rows = rows;
@@ -641,6 +654,6 @@ int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user)
 
 zl_frame_needs_t zl_frame_needs(const zl_frame *f)
 {
-    zl_frame_needs_t none = {0, 0};
+    zl_frame_needs_t none = {0, 0, 0};
     return f ? f->needs : none;
 }
