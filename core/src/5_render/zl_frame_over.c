@@ -145,7 +145,6 @@ zl_status zl_frame_over_begin(zl_frame *f)
         if (pieces != 0 && (f->cfg.max_triangles == 0 || pieces > f->cfg.max_active))
             return ZL_ERR_CAPACITY; /* one primitive alone does not fit */
     }
-    f->over = 1;
     return ZL_OK;
 }
 

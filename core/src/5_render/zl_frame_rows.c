@@ -572,6 +572,42 @@ static ZL_NOINLINE void catch_up(zl_frame *f)
         render_row(f, y, f->color_band[0], zrow);
 }
 
+/* Describe the band of `rows` rows at next_row in `color` and move on. */
+static ZL_ALWAYS_INLINE void band_done(zl_frame *f, zl_band *band, uint16_t rows, uint8_t *color, uint16_t w,
+                                        size_t bpp)
+{
+    band->first_row = f->next_row;
+    band->rows = rows;
+    band->width = w;
+    band->format = f->cfg.format;
+    band->color = color;
+    band->color_stride = (int32_t)(w * bpp);
+    band->depth = f->depth_band;
+    band->depth_stride = (int32_t)w * 2;
+    f->next_row = (uint16_t)(f->next_row + rows);
+    if (f->cfg.color_buffers == 2)
+        f->band_index ^= 1u;
+}
+
+/* zl_frame_next_band over capacity (f->over): the band in
+ * slices (zl_frame_over.c). Its own function, so the bands of a frame that
+ * fits test nothing more than before. */
+static ZL_NOINLINE zl_status next_band_over(zl_frame *f, zl_band *band)
+{
+    uint16_t rows = (uint16_t)(f->end_row - f->next_row);
+    uint8_t *color = f->color_band[f->band_index];
+    zl_status st;
+    if (f->next_row >= f->end_row)
+        return ZL_DONE;
+    if (rows > f->cfg.band_rows)
+        rows = f->cfg.band_rows;
+    st = zl_frame_over_band(f, rows, color);
+    if (st != ZL_OK)
+        return st;
+    band_done(f, band, rows, color, f->cfg.width, zl_format_bytes((zl_format)f->cfg.format));
+    return ZL_OK;
+}
+
 zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
 {
     uint16_t rows, r, w;
@@ -583,10 +619,18 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
      * with ZL_ERR_ARG (tests/test_frame_faults.c). */
     if (f == NULL || band == NULL)
         return ZL_ERR_ARG;
-    if (!f->planned) {
-        zl_status st = zl_frame_plan(f);
-        if (st == ZL_ERR_CAPACITY && f->part == 0) /* a whole frame: band by band (zl_frame_over.c) */
+    if (!f->planned) { /* first band, or over capacity (then planned stays 0: no test added per band) */
+        zl_status st;
+        if (f->over)
+            return next_band_over(f, band);
+        st = zl_frame_plan(f);
+        if (st == ZL_ERR_CAPACITY && f->part == 0) { /* a whole frame: band by band */
             st = zl_frame_over_begin(f);
+            if (st != ZL_OK)
+                return st;
+            f->over = 1;
+            return next_band_over(f, band);
+        }
         if (st != ZL_OK)
             return st;
         f->planned = 1;
@@ -601,40 +645,24 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
     if (rows > f->cfg.band_rows)
         rows = f->cfg.band_rows;
     color = f->color_band[f->band_index];
-    if (f->over) { /* over capacity: in slices (zl_frame_over.c) */
-        zl_status st = zl_frame_over_band(f, rows, color);
-        if (st != ZL_OK)
-            return st;
-    } else {
-        /* The clear colour in the band's format, every channel written (what
-         * zl_fill_color_row does with the default state's span settings). */
-        pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
-        memcpy(&pix16, pix, 2);
-        for (r = 0; r < rows; r++) {
-            uint8_t *crow = color + (size_t)r * w * bpp;
-            uint16_t *zrow = f->depth_band + (size_t)r * w;
-            if (bpp == 2) { /* rows of an 8-byte aligned band, an even number of bytes apart */
-                zl_fill16((uint16_t *)(void *)crow, pix16, w);
-            } else {
-                uint16_t i;
-                for (i = 0; i < w; i++)
-                    memcpy(crow + (size_t)i * 3u, pix, 3);
-            }
-            zl_fill16(zrow, f->clear_depth, w);
-            render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
+    /* The clear colour in the band's format, every channel written (what
+     * zl_fill_color_row does with the default state's span settings). */
+    pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
+    memcpy(&pix16, pix, 2);
+    for (r = 0; r < rows; r++) {
+        uint8_t *crow = color + (size_t)r * w * bpp;
+        uint16_t *zrow = f->depth_band + (size_t)r * w;
+        if (bpp == 2) { /* rows of an 8-byte aligned band, an even number of bytes apart */
+            zl_fill16((uint16_t *)(void *)crow, pix16, w);
+        } else {
+            uint16_t i;
+            for (i = 0; i < w; i++)
+                memcpy(crow + (size_t)i * 3u, pix, 3);
         }
+        zl_fill16(zrow, f->clear_depth, w);
+        render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
     }
-    band->first_row = f->next_row;
-    band->rows = rows;
-    band->width = w;
-    band->format = f->cfg.format;
-    band->color = color;
-    band->color_stride = (int32_t)(w * bpp);
-    band->depth = f->depth_band;
-    band->depth_stride = (int32_t)w * 2;
-    f->next_row = (uint16_t)(f->next_row + rows);
-    if (f->cfg.color_buffers == 2)
-        f->band_index ^= 1u;
+    band_done(f, band, rows, color, w, bpp);
     return ZL_OK;
 }
 
