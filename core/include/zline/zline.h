@@ -882,7 +882,8 @@ typedef struct {
     uint8_t part;            /* 0: a whole frame; 1, 2: the first, second part of a split one */
     uint8_t prepared;        /* a part: zl_frame_prepare done */
     uint16_t split_row;      /* a part: the row asked of zl_frame_split (0: balanced) */
-    uint8_t over;            /* over capacity: each band planned on its own, `planned` stays 0 */
+    uint8_t over;            /* over capacity: planned by windows of bands, `planned` stays 0 */
+    uint16_t over_end;       /* over capacity: the rows the current window's plan covers end here */
     uint16_t mesh_count;
     uint32_t vertex_count;
     uint32_t triangle_total;

@@ -86,6 +86,11 @@ int zl_frame_layout(const zl_frame_config *c, layout *l);
 void zl_frame_split_resolve(zl_frame *f);
 /* Planning, on the first band (zl_frame_plan.c). */
 zl_status zl_frame_plan(zl_frame *f);
+/* Over capacity's classification of primitive t of mesh record mi, the
+ * count pass's fast case (zl_frame_plan.c): a filled triangle whose three
+ * vertices are cached inside gives 1 and its rows [*first, *end), or 0 when
+ * it draws nothing; -1 for every other primitive (the general case). */
+int zl_frame_rows_cached(const zl_frame *f, unsigned mi, uint32_t t, int32_t *first, int32_t *end);
 /* Row y of the planned records into the row buffers (zl_frame_rows.c). */
 void zl_frame_row(zl_frame *f, uint16_t y, uint8_t *crow, uint16_t *zrow);
 /* Over capacity (zl_frame_over.c): after zl_frame_plan's ZL_ERR_CAPACITY on

@@ -2,18 +2,20 @@
 /*
  * Stage 5, render: scanline and band mode over capacity (issue 25). When the
  * whole frame's plan does not fit the work buffer (more visible primitives
- * than max_triangles, or more crossing a row than max_active), each band is
- * planned on its own: a slice keeps, in submission order, the primitives
- * crossing the band's rows from a first id on, as many as fit; the band is
- * rendered slice after slice into the same colour and depth rows, so every
- * pixel still sees the primitives in id order (depth ties and blending as
- * in frame mode). A slice's primitives that start above the band are
- * walked there first without writing a pixel ("dry" rows: every mesh's span
- * width set to 0, so every span, line run and point is clipped away), which
- * brings their records to the band's first row exactly as a whole walk
- * would. Planning a slice classifies every primitive from its first id
- * twice (count, then place): the cost of the fallback, paid only over
- * capacity; the normal path is untouched.
+ * than max_triangles, or more crossing a row than max_active), the rows are
+ * planned a window at a time: the longest run of whole bands whose
+ * primitives fit one plan (window_end), rendered band after band from that
+ * plan. A band where not even that fits is rendered in slices: a slice
+ * keeps, in submission order, the primitives crossing the band's rows from
+ * a first id on, as many as fit; the band is rendered slice after slice
+ * into the same colour and depth rows, so every pixel still sees the
+ * primitives in id order (depth ties and blending as in frame mode). A
+ * plan's primitives that start above its first row are walked there first
+ * without writing a pixel ("dry" rows: every mesh's span width set to 0, so
+ * every span, line run and point is clipped away), which brings their
+ * records to that row exactly as a whole walk would. Each window or band classifies every primitive once more to
+ * find its window, and each plan twice more (count, then place): the cost
+ * of the fallback, paid only over capacity; the normal path is untouched.
  */
 #include <string.h>
 
@@ -30,6 +32,9 @@ static ZL_NOINLINE unsigned prim_rows(const zl_frame *f, unsigned mi, uint32_t t
     zl_source s;
     zl_poly poly;
     unsigned k, n, pieces = 0;
+    int cached = zl_frame_rows_cached(f, mi, t, first, end);
+    if (cached >= 0) /* a filled triangle cached inside: one piece, or none */
+        return (unsigned)cached;
     *first = INT16_MAX;
     *end = 0;
     source_of(f, m, &s);
@@ -133,6 +138,45 @@ static void plan_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, ui
     f->active_head = ZL_LIST_END;
 }
 
+/* The end of the longest window of whole bands from row r0 whose
+ * primitives fit in one plan: those crossing it at most max_triangles, at
+ * most max_active records on each of its rows; r0 when not even its first
+ * band fits (then the band goes in slices). One classification pass: the
+ * primitives reaching r0 or below counted at their first row there
+ * (row_start) and their records over their rows (a difference array in the
+ * pool, as planning's). */
+static uint16_t window_end(zl_frame *f, uint16_t r0)
+{
+    int32_t *diff = (int32_t *)(void *)f->pool;
+    uint16_t h = f->cfg.height, y, end_ok = r0;
+    uint32_t id, kept = 0, active = 0;
+    unsigned mi = 0;
+    memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
+    memset(diff, 0, ((size_t)h + 1) * sizeof(int32_t));
+    for (id = 0; id < f->triangle_total; id++) {
+        int32_t first, end;
+        unsigned pieces;
+        mi = mesh_from(f, mi, id);
+        pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
+        if (pieces == 0 || end <= r0)
+            continue;
+        if (first < r0)
+            first = r0;
+        f->row_start[first]++;
+        diff[first] += (int32_t)pieces;
+        diff[end] -= (int32_t)pieces;
+    }
+    for (y = r0; y < f->end_row; y++) {
+        kept += f->row_start[y];
+        active = (uint32_t)((int32_t)active + diff[y]);
+        if (kept > f->cfg.max_triangles || active > f->cfg.max_active)
+            break;
+        if ((uint16_t)(y + 1u) % f->cfg.band_rows == 0 || y + 1u == f->end_row)
+            end_ok = (uint16_t)(y + 1u);
+    }
+    return end_ok;
+}
+
 zl_status zl_frame_over_begin(zl_frame *f)
 {
     uint32_t id;
@@ -178,6 +222,21 @@ zl_status zl_frame_over_band(zl_frame *f, uint16_t rows, uint8_t *color)
         for (i = 0; i < w; i++)
             memcpy(crow + (size_t)i * bpp, pix, bpp);
         zl_fill16(f->depth_band + (size_t)r * w, f->clear_depth, w);
+    }
+    if (r0 >= f->over_end) { /* a new window, when its first band fits one plan */
+        uint16_t end = window_end(f, r0);
+        if (end > r0) {
+            uint32_t id_hi;
+            plan_slice(f, r0, end, 0, &id_hi); /* takes them all: window_end counted them */
+            f->needs.replans++;
+            dry_rows(f, r0, color, f->depth_band);
+            f->over_end = end;
+        }
+    }
+    if (r0 < f->over_end) { /* the window's plan: its records go on from the band above */
+        for (r = 0; r < rows; r++)
+            zl_frame_row(f, (uint16_t)(r0 + r), color + (size_t)r * w * bpp, f->depth_band + (size_t)r * w);
+        return ZL_OK;
     }
     while (id_lo < f->triangle_total) {
         uint32_t id_hi;
