@@ -799,25 +799,30 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  *                  that is below the cap; zl_frame_needs() gives the exact
  *                  figure of a scene
  * Over capacity (issue 25): when the submitted scene needs more triangles
- * or active records than the buffer holds, the frame still comes out
- * complete and byte-identical, band by band: each band is planned on its own
- * (only the primitives crossing its rows are kept) and, when even those do
- * not fit, rendered in passes over consecutive ranges of primitives in
- * submission order, into the same band colour and depth (every pixel still
- * sees the primitives in submission order: depth ties and blending as in
- * frame mode). A pass whose primitives start above the band first walks
- * their rows without writing. zl_frame_needs() then reports the true needs
- * and `replans`, the plans made after the first (0 when the scene fitted).
- * Cost: every plan classifies every primitive again, and every pass walks
- * the rows above its band of the primitives it keeps: on the host, a
- * scanline bunny frame over capacity took ~40x the time of the fitting
- * frame (the figure from tools in tests/test_frame_overcap.c's comment).
+ * or active records than the buffer holds, zl_frame_next_band does not fail:
+ * the frame still comes out complete and byte-identical to frame mode. The
+ * rows are then planned a window at a time (the longest run of whole bands
+ * whose primitives fit one plan, rendered band after band from it); a band
+ * where not even that fits is rendered in passes over consecutive ranges of
+ * primitives in submission order, into the same band colour and depth, so
+ * every pixel still sees the primitives in submission order (depth ties and
+ * blending as in frame mode). A plan's primitives that start above its
+ * first row are first walked there without writing. zl_frame_needs() still
+ * reports the true needs, and `replans` the plans made after the whole
+ * frame's (0 when the scene fitted: check it to know that it happened).
+ * Cost: every window or band classifies every primitive again, up to three
+ * times (find the window, count, place), so a frame over capacity is much
+ * slower: the bunny on the host (callgrind, tools/bench/zline-bench-modes
+ * MODEL --only MODE --over K) 2.17 M instructions in scanline mode within
+ * capacity, 193 M at half its capacities, 235 M at a tenth; in bands of 16
+ * rows 2.14 M, 23.5 M, 23.7 M. Size for the needs (zl_frame_bound), and
+ * treat replans as a warning. Frames that fit take the same path as before.
  * ZL_ERR_CAPACITY remains, before any band, only when one primitive alone
  * does not fit (max_triangles 0, or fewer active records than its pieces:
- * up to 8 for a clipped triangle, 3 for lines and points of polygon modes),
- * and for the parts of a split frame (zl_frame_split), which are not planned
- * again. max_meshes and max_vertices do not depend on the pose: over them
- * zl_frame_add_mesh fails with ZL_ERR_CAPACITY as before.
+ * up to 8 for a clipped triangle, 3 for the lines or points of a polygon
+ * mode), and for the parts of a split frame (zl_frame_split), which are not
+ * planned again. max_meshes and max_vertices do not depend on the pose:
+ * over them zl_frame_add_mesh fails with ZL_ERR_CAPACITY as before.
  *
  * Order and faults: zl_frame_begin first (a zeroed zl_frame is refused with
  * ZL_ERR_ARG by every other call); meshes, lines and outlines before the
@@ -862,9 +867,10 @@ typedef struct {
 typedef struct {
     uint32_t triangles;   /* visible triangles kept for the frame */
     uint32_t active;      /* bound on triangles crossing one row at once */
-    uint32_t replans;     /* plans after the first: 0 when the scene fitted the
-                             buffer; else one per band and range of primitives
-                             rendered over capacity (see Sizing above) */
+    uint32_t replans;     /* plans after the whole frame's: 0 when the scene
+                             fitted the buffer; over capacity one per window
+                             of bands and per pass of a band (see Sizing
+                             above); zl_vis_needs: always 0 */
 } zl_frame_needs_t;
 
 /* Private bookkeeping; the caller allocates it but never touches it. */
