@@ -1,21 +1,20 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Stage 5, render: scanline and band mode over capacity (issue 25). When the
- * whole frame's plan does not fit the work buffer (more visible primitives
- * than max_triangles, or more crossing a row than max_active), the rows are
+ * Stage 5, render: scanline and band mode over capacity (issue 25), its
+ * planning; zl_frame_rows.c's over_band renders the bands. When the whole
+ * frame's plan does not fit the work buffer (more visible primitives than
+ * max_triangles, or more crossing a row than max_active), the rows are
  * planned a window at a time: the longest run of whole bands whose
- * primitives fit one plan (window_end), rendered band after band from that
- * plan. A band where not even that fits is rendered in slices: a slice
- * keeps, in submission order, the primitives crossing the band's rows from
- * a first id on, as many as fit; the band is rendered slice after slice
- * into the same colour and depth rows, so every pixel still sees the
- * primitives in id order (depth ties and blending as in frame mode). A
- * plan's primitives that start above its first row are walked there first
- * without writing a pixel ("dry" rows: every mesh's span width set to 0, so
- * every span, line run and point is clipped away), which brings their
- * records to that row exactly as a whole walk would. Each window or band classifies every primitive once more to
- * find its window, and each plan twice more (count, then place): the cost
- * of the fallback, paid only over capacity; the normal path is untouched.
+ * primitives fit one plan (zl_frame_over_window), rendered band after band
+ * from that plan. A band where not even that fits is rendered in slices
+ * (zl_frame_over_slice): a slice keeps, in submission order, the primitives
+ * crossing the band's rows from a first id on, as many as fit; the band is
+ * rendered slice after slice into the same colour and depth rows, so every
+ * pixel still sees the primitives in id order (depth ties and blending as
+ * in frame mode). Each window or band classifies every primitive once more
+ * to find its window, and each plan twice more (count, then place): the
+ * cost of the fallback, paid only over capacity; the normal path is
+ * untouched.
  */
 #include <string.h>
 
@@ -100,7 +99,7 @@ static int take_rows(uint32_t *cnt, const zl_frame *f, int32_t r0, int32_t r1, i
  * hold, bucketed by first row; *id_hi: the id the slice stopped before.
  * The per-row counts borrow the pool, whose region (with the Gouraud one
  * after it) holds height + 1 int32 (zl_frame_layout). */
-static void plan_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t *id_hi)
+void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t *id_hi)
 {
     uint32_t *cnt = (uint32_t *)(void *)f->pool;
     uint32_t id, n = 0, start = 0, slot;
@@ -145,7 +144,7 @@ static void plan_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, ui
  * primitives reaching r0 or below counted at their first row there
  * (row_start) and their records over their rows (a difference array in the
  * pool, as planning's). */
-static uint16_t window_end(zl_frame *f, uint16_t r0)
+uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
 {
     int32_t *diff = (int32_t *)(void *)f->pool;
     uint16_t h = f->cfg.height, y, end_ok = r0;
@@ -188,66 +187,6 @@ zl_status zl_frame_over_begin(zl_frame *f)
         pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
         if (pieces != 0 && (f->cfg.max_triangles == 0 || pieces > f->cfg.max_active))
             return ZL_ERR_CAPACITY; /* one primitive alone does not fit */
-    }
-    return ZL_OK;
-}
-
-/* The rows above r0 of the slice's primitives that start there, walked
- * without writing (see the top of this file). */
-static void dry_rows(zl_frame *f, uint16_t r0, uint8_t *crow, uint16_t *zrow)
-{
-    uint16_t y = 0, mi;
-    while (y < r0 && f->row_start[y] == 0) /* bucket ends: empty before the first */
-        y++;
-    if (y >= r0)
-        return;
-    for (mi = 0; mi < f->mesh_count; mi++)
-        f->meshes[mi].span.width = 0;
-    for (; y < r0; y++)
-        zl_frame_row(f, y, crow, zrow);
-    for (mi = 0; mi < f->mesh_count; mi++)
-        f->meshes[mi].span.width = f->cfg.width;
-}
-
-zl_status zl_frame_over_band(zl_frame *f, uint16_t rows, uint8_t *color)
-{
-    uint16_t r, w = f->cfg.width, r0 = f->next_row, r1 = (uint16_t)(f->next_row + rows);
-    size_t bpp = zl_format_bytes((zl_format)f->cfg.format);
-    uint32_t id_lo = 0;
-    uint8_t pix[3] = {0, 0, 0};
-    pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
-    for (r = 0; r < rows; r++) { /* zl_frame_next_band's clear */
-        uint8_t *crow = color + (size_t)r * w * bpp;
-        uint16_t i;
-        for (i = 0; i < w; i++)
-            memcpy(crow + (size_t)i * bpp, pix, bpp);
-        zl_fill16(f->depth_band + (size_t)r * w, f->clear_depth, w);
-    }
-    if (r0 >= f->over_end) { /* a new window, when its first band fits one plan */
-        uint16_t end = window_end(f, r0);
-        if (end > r0) {
-            uint32_t id_hi;
-            plan_slice(f, r0, end, 0, &id_hi); /* takes them all: window_end counted them */
-            f->needs.replans++;
-            dry_rows(f, r0, color, f->depth_band);
-            f->over_end = end;
-        }
-    }
-    if (r0 < f->over_end) { /* the window's plan: its records go on from the band above */
-        for (r = 0; r < rows; r++)
-            zl_frame_row(f, (uint16_t)(r0 + r), color + (size_t)r * w * bpp, f->depth_band + (size_t)r * w);
-        return ZL_OK;
-    }
-    while (id_lo < f->triangle_total) {
-        uint32_t id_hi;
-        plan_slice(f, r0, r1, id_lo, &id_hi);
-        f->needs.replans++;
-        if (id_hi == id_lo) /* cannot happen: zl_frame_over_begin checked every primitive alone */
-            return ZL_ERR_CAPACITY;
-        dry_rows(f, r0, color, f->depth_band);
-        for (r = 0; r < rows; r++)
-            zl_frame_row(f, (uint16_t)(r0 + r), color + (size_t)r * w * bpp, f->depth_band + (size_t)r * w);
-        id_lo = id_hi;
     }
     return ZL_OK;
 }
