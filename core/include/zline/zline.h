@@ -814,8 +814,8 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  * times (find the window, count, place), so a frame over capacity is much
  * slower: the bunny on the host (callgrind, tools/bench/zline-bench-modes
  * MODEL --only MODE --over K) 2.17 M instructions in scanline mode within
- * capacity, 193 M at half its capacities, 235 M at a tenth; in bands of 16
- * rows 2.14 M, 23.5 M, 23.7 M. Size for the needs (zl_frame_bound), and
+ * capacity, 192 M at half its capacities, 235 M at a tenth; in bands of 16
+ * rows 2.14 M, 23.4 M, 23.7 M. Size for the needs (zl_frame_bound), and
  * treat replans as a warning. Frames that fit take the same path as before.
  * ZL_ERR_CAPACITY remains, before any band, only when one primitive alone
  * does not fit (max_triangles 0, or fewer active records than its pieces:
