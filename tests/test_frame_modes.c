@@ -726,6 +726,12 @@ static void test_capacity_over_and_error(void)
     TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).active);
     TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).triangles);
     TEST_ASSERT_EQUAL_UINT32(2 * H, zl_frame_needs(&f).replans); /* every row in two passes: 9, then 1 */
+    /* over capacity too, a mesh after the first band is refused (the frame goes on) */
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &(zl_band){0}));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_UINT32(2, zl_frame_needs(&f).replans);
     cfg.max_active = 10;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
