@@ -281,32 +281,38 @@ static unsigned work_guard_damage(size_t bytes)
     return bad;
 }
 
+/* The scene's meshes, lines and outlines, in order, into frame f. */
+static void add_scene(zl_frame *f)
+{
+    int i;
+    for (i = 0; i < NMESH; i++) {
+        const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
+        if (scene[i].is_lines == 2)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_outlines(f, &scene[i].mesh, mvp, &scene[i].state,
+                                                               &scene[i].style, &scene[i].outline));
+        else if (scene[i].is_lines)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_lines(f, &scene[i].lines, mvp, &scene[i].state,
+                                                            &scene[i].style));
+        else if (styled)
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(f, &scene[i].mesh, mvp, &scene[i].state,
+                                                                  &scene[i].style));
+        else
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(f, &scene[i].mesh, mvp, &scene[i].state));
+    }
+}
+
 static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t bgz)
 {
     zl_frame_config cfg;
     zl_frame f;
     compare_ctx cc;
-    int i;
     size_t bytes;
     config_for(&cfg, fmt, band);
     bytes = zl_frame_bytes(&cfg);
     TEST_ASSERT_TRUE(bytes > 0 && bytes + 2 * WORK_GUARD <= sizeof work);
     work_guard_fill(bytes);
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, (uint8_t *)work + WORK_GUARD, bytes, bg, bgz));
-    for (i = 0; i < NMESH; i++) {
-        const zl_mat4 *mvp = scene[i].use_mvp ? &scene[i].mvp : NULL;
-        if (scene[i].is_lines == 2)
-            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_outlines(&f, &scene[i].mesh, mvp, &scene[i].state,
-                                                               &scene[i].style, &scene[i].outline));
-        else if (scene[i].is_lines)
-            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_lines(&f, &scene[i].lines, mvp, &scene[i].state,
-                                                            &scene[i].style));
-        else if (styled)
-            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &scene[i].mesh, mvp, &scene[i].state,
-                                                                  &scene[i].style));
-        else
-            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &scene[i].mesh, mvp, &scene[i].state));
-    }
+    add_scene(&f);
     cc.fmt = fmt;
     cc.rows_seen = 0;
     cc.mismatches = 0;
@@ -325,6 +331,100 @@ static void render_and_compare(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t
     TEST_ASSERT_EQUAL_UINT_MESSAGE(0, work_guard_damage(bytes), "bytes around the work buffer written");
 }
 
+#ifndef ZT_FRAME_DUAL
+/*
+ * Over capacity (issue 25): the scene rendered with max_triangles and / or
+ * max_active below its needs (by exactly 1, by 2x and by 10x; never below
+ * what one primitive takes alone: 1 triangle, 9 records) must still come
+ * out whole and byte-identical to frame mode, nothing written outside the
+ * work buffer, the true needs reported and `replans` non-zero exactly when
+ * it was over. (Split frames keep ZL_ERR_CAPACITY: not here.)
+ */
+enum { OVER_MIN_ACTIVE = 9 };
+
+static uint32_t reduced(uint32_t need, unsigned how, uint32_t least)
+{
+    uint32_t v = how == 1 ? need - 1u : need / how;
+    return need == 0 || v < least ? least : v;
+}
+
+static zl_frame_needs_t scene_needs(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t bgz)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    zl_band b;
+    config_for(&cfg, fmt, band);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, bgz));
+    add_scene(&f);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &b));
+    TEST_ASSERT_EQUAL_UINT32(0, zl_frame_needs(&f).replans);
+    return zl_frame_needs(&f);
+}
+
+/* One over-capacity render: which = 1 triangles, 2 active, 3 both. Returns
+ * whether the capacities were below the needs. */
+static int render_over_once(zl_format fmt, uint16_t band, zl_rgb bg, uint16_t bgz, zl_frame_needs_t need,
+                            unsigned how, unsigned which)
+{
+    zl_frame_config cfg;
+    zl_frame f;
+    compare_ctx cc;
+    size_t bytes;
+    int over;
+    config_for(&cfg, fmt, band);
+    if (which & 1u)
+        cfg.max_triangles = reduced(need.triangles, how, 1);
+    if (which & 2u)
+        cfg.max_active = reduced(need.active, how, OVER_MIN_ACTIVE);
+    over = need.triangles > cfg.max_triangles || need.active > cfg.max_active;
+    bytes = zl_frame_bytes(&cfg);
+    TEST_ASSERT_TRUE(bytes > 0 && bytes + 2 * WORK_GUARD <= sizeof work);
+    work_guard_fill(bytes);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, (uint8_t *)work + WORK_GUARD, bytes, bg, bgz));
+    add_scene(&f);
+    cc.fmt = fmt;
+    cc.rows_seen = 0;
+    cc.mismatches = 0;
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, compare_band, &cc));
+    TEST_ASSERT_EQUAL_INT(H, cc.rows_seen);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cc.mismatches, "over capacity: rows differ from frame mode");
+    TEST_ASSERT_EQUAL_UINT_MESSAGE(0, work_guard_damage(bytes), "bytes around the work buffer written");
+    TEST_ASSERT_EQUAL_UINT32(need.triangles, zl_frame_needs(&f).triangles);
+    TEST_ASSERT_EQUAL_UINT32(need.active, zl_frame_needs(&f).active);
+    if (over) /* at least one plan after the whole frame's */
+        TEST_ASSERT_TRUE(zl_frame_needs(&f).replans >= 1);
+    else
+        TEST_ASSERT_EQUAL_UINT32(0, zl_frame_needs(&f).replans);
+    return over;
+}
+
+static long over_frames; /* how many renders were over capacity */
+
+/* A scene over capacity by 1, 2x and 10x, in scanline mode or 7-row bands
+ * and in the capacities reduced (triangles, active records or both) by
+ * turns from scene to scene: every combination comes up many times over
+ * the random scenes, within the cross targets' time. */
+static unsigned over_turn;
+
+static void render_over_and_compare(zl_format fmt, zl_rgb bg, uint16_t bgz)
+{
+    static const unsigned hows[] = {1, 2, 10};
+    uint16_t band = (over_turn & 1u) ? 7 : 1;
+    unsigned which = (over_turn / 2u) % 3u + 1u, h;
+    zl_frame_needs_t need = scene_needs(fmt, band, bg, bgz);
+    for (h = 0; h < sizeof hows / sizeof hows[0]; h++)
+        over_frames += render_over_once(fmt, band, bg, bgz, need, hows[h], which);
+    over_turn++;
+}
+#else
+static void render_over_and_compare(zl_format fmt, zl_rgb bg, uint16_t bgz)
+{
+    (void)fmt;
+    (void)bg;
+    (void)bgz;
+}
+#endif
+
 static void test_random_scenes_identical_in_every_band_height(void)
 {
     static const uint16_t bands[] = {1, 2, 7, H};
@@ -341,9 +441,13 @@ static void test_random_scenes_identical_in_every_band_height(void)
             drawn += frame_depth[i] != bgz;
         for (i = 0; i < (int)(sizeof bands / sizeof bands[0]); i++)
             render_and_compare(fmt, bands[i], bg, bgz);
+        render_over_and_compare(fmt, bg, bgz);
     }
     /* The scenes must actually draw something for the comparison to mean anything. */
     TEST_ASSERT_GREATER_THAN(150L * W * H / 20, drawn);
+#ifndef ZT_FRAME_DUAL
+    TEST_ASSERT_GREATER_THAN(150L * 3 / 2, over_frames); /* most over-capacity renders were over */
+#endif
 }
 
 /* The same with styles: polygon modes per face, offset, point sizes, both
@@ -365,6 +469,7 @@ static void test_random_styled_scenes_identical_in_every_band_height(void)
             drawn += frame_depth[i] != bgz;
         for (i = 0; i < (int)(sizeof bands / sizeof bands[0]); i++)
             render_and_compare(fmt, bands[i], bg, bgz);
+        render_over_and_compare(fmt, bg, bgz);
     }
     styled = 0;
     TEST_ASSERT_GREATER_THAN(200L * W * H / 40, drawn);
@@ -423,6 +528,148 @@ static void test_sizes_are_exact_and_checked(void)
     TEST_ASSERT_EQUAL_INT(0, zl_frame_bytes(&cfg));
 }
 
+#ifndef ZT_FRAME_DUAL
+/*
+ * Over capacity with an independent reference (zt_ref's coverage, the
+ * contract's blending formula): NT_TIES pixel-space triangles, all at the
+ * same depth, most of them crossing every row, rendered in RGB888 with
+ * capacities below the needs (by 1 record, by 2x and 10x, and by 1
+ * triangle). Depth ties decide the image: LESS keeps the first triangle
+ * covering a pixel, LEQUAL the last, ALPHA blending blends them all in
+ * submission order. Each must equal the reference, which frame mode must
+ * equal too.
+ */
+enum { NT_TIES = 40 };
+static zl_fixed ties_pos[NT_TIES * 9];
+static uint16_t ties_idx[NT_TIES * 3];
+static uint8_t ties_col[NT_TIES * 3];
+static uint8_t ties_ref[W * H * 3];
+
+static void ties_scene(zl_mesh *m)
+{
+    int i, k;
+    for (i = 0; i < NT_TIES; i++) {
+        for (k = 0; k < 3; k++) {
+            zl_fixed *v = &ties_pos[(i * 3 + k) * 3];
+            v[0] = rand_range(-8 * ZL_FX_ONE, (W + 8) * ZL_FX_ONE);
+            v[1] = k == 0 ? rand_range(-4 * ZL_FX_ONE, 0) : (k == 1 ? rand_range(H * ZL_FX_ONE, (H + 4) * ZL_FX_ONE)
+                                                                    : rand_range(0, H * ZL_FX_ONE));
+            v[2] = ZL_FX_ONE / 2; /* every triangle at the same depth: ties everywhere */
+            ties_idx[i * 3 + k] = (uint16_t)(i * 3 + k);
+            ties_col[i * 3 + k] = (uint8_t)next_rand();
+        }
+    }
+    memset(m, 0, sizeof *m);
+    m->positions = ties_pos;
+    m->indices = ties_idx;
+    m->vertex_count = NT_TIES * 3;
+    m->triangle_count = NT_TIES;
+    m->face_colors = ties_col;
+}
+
+/* The reference image: func ZL_LESS or ZL_LEQUAL, alpha 0 (opaque) or the
+ * blending alpha. */
+static void ties_reference(zl_rgb bg, unsigned func, unsigned alpha)
+{
+    int x, y, i, c;
+    zt_tri tri[NT_TIES];
+    for (i = 0; i < NT_TIES; i++)
+        zt_tri_init(&tri[i], &ties_pos[i * 9], &ties_pos[i * 9 + 3], &ties_pos[i * 9 + 6]);
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < W; x++) {
+            uint8_t *px = &ties_ref[(y * W + x) * 3];
+            int covered = 0;
+            px[0] = bg.r;
+            px[1] = bg.g;
+            px[2] = bg.b;
+            for (i = 0; i < NT_TIES; i++) {
+                if (!zt_tri_covers(&tri[i], x, y) || (func == ZL_LESS && covered))
+                    continue;
+                covered = 1;
+                for (c = 0; c < 3; c++) {
+                    unsigned src = ties_col[i * 3 + c];
+                    /* round((src a + old (255 - a)) / 255); 255 is odd: no halves */
+                    px[c] = (uint8_t)(alpha == 0 ? src : (2u * (src * alpha + px[c] * (255u - alpha)) + 255u) / 510u);
+                }
+            }
+        }
+    }
+}
+
+static void ties_state(zl_state *st, zl_style *sty, unsigned func, unsigned alpha)
+{
+    zl_state_default(st);
+    st->depth_func = (uint8_t)func;
+    zl_style_default(sty);
+    if (alpha != 0) {
+        sty->blend = ZL_BLEND_ALPHA;
+        sty->alpha = (uint8_t)alpha;
+    }
+}
+
+static void test_over_capacity_ties_and_blending_match_reference(void)
+{
+    static const unsigned funcs[3] = {ZL_LESS, ZL_LEQUAL, ZL_LEQUAL}, alphas[3] = {0, 0, 100};
+    zl_rgb bg = {40, 90, 160};
+    int scene_no, k, drawn = 0;
+    for (scene_no = 0; scene_no < 6; scene_no++) {
+        zl_mesh m;
+        ties_scene(&m);
+        for (k = 0; k < 3; k++) {
+            zl_state st;
+            zl_style sty;
+            zl_target t;
+            zl_context ctx;
+            zl_frame_config cfg;
+            zl_frame f;
+            zl_band b;
+            zl_frame_needs_t need;
+            unsigned c;
+            ties_state(&st, &sty, funcs[k], alphas[k]);
+            ties_reference(bg, funcs[k], alphas[k]);
+            zt_target_packed(&t, frame_color, frame_depth, W, H, ZL_FORMAT_RGB888);
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
+            ctx.state = st;
+            ctx.style = sty;
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+            TEST_ASSERT_EQUAL_MEMORY_MESSAGE(ties_ref, frame_color, sizeof ties_ref, "frame mode against the reference");
+            for (c = 0; c < W * H; c++)
+                drawn += frame_depth[c] != 65535;
+            zt_frame_config_of(&cfg, W, H, 1, ZL_FORMAT_RGB888);
+            zt_frame_capacity(&cfg, 1, NT_TIES * 3, NT_TIES, NT_TIES);
+            cfg.styled = cfg.textured = 1; /* blending takes the styled rows */
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &m, NULL, &st, &sty));
+            TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &b));
+            need = zl_frame_needs(&f);
+            TEST_ASSERT_TRUE(need.active > 20); /* most triangles cross every row */
+            for (c = 0; c < 4; c++) {
+                static const unsigned hows[4] = {1, 2, 10, 0};
+                static const uint16_t bands[4] = {1, 7, 1, 3};
+                compare_ctx cc;
+                zt_frame_config_of(&cfg, W, H, bands[c], ZL_FORMAT_RGB888);
+                zt_frame_capacity(&cfg, 1, NT_TIES * 3, hows[c] == 0 ? need.triangles - 1u : NT_TIES,
+                                  hows[c] == 0 ? NT_TIES : reduced(need.active, hows[c], 1));
+                cfg.styled = cfg.textured = 1;
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh_styled(&f, &m, NULL, &st, &sty));
+                cc.fmt = ZL_FORMAT_RGB888;
+                cc.rows_seen = 0;
+                cc.mismatches = 0;
+                TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, compare_band, &cc));
+                TEST_ASSERT_EQUAL_INT(H, cc.rows_seen);
+                TEST_ASSERT_EQUAL_INT(0, cc.mismatches);
+                TEST_ASSERT_TRUE(zl_frame_needs(&f).replans >= (uint32_t)(H + bands[c] - 1) / bands[c]);
+                TEST_ASSERT_EQUAL_UINT32(need.active, zl_frame_needs(&f).active);
+            }
+        }
+    }
+    TEST_ASSERT_GREATER_THAN(6 * 3 * W * H / 2, drawn);
+}
+
+#endif
+
 static int count_calls(void *user, const zl_band *b)
 {
     (void)b;
@@ -430,9 +677,12 @@ static int count_calls(void *user, const zl_band *b)
     return 0;
 }
 
-static void test_capacity_error_before_any_row(void)
+static void test_capacity_over_and_error(void)
 {
-    /* Ten overlapping full-height triangles need ten active records. */
+    /* Ten overlapping full-height triangles need ten active records: with
+     * nine (the frame over capacity by one) the frame still comes out
+     * whole, as frame mode draws it; with no triangle record at all (one
+     * primitive alone does not fit) ZL_ERR_CAPACITY before any row. */
     static zl_fixed pos[30 * 3];
     static uint16_t idx[30];
     zl_mesh m;
@@ -440,6 +690,11 @@ static void test_capacity_error_before_any_row(void)
     zl_frame f;
     zl_state st;
     zl_rgb bg = {0, 0, 0};
+    zl_target t;
+    zl_context ctx;
+    zt_frame_copy copy;
+    static uint8_t band_color[W * H * 2];
+    static uint16_t band_depth[W * H];
     int i, calls = 0;
     for (i = 0; i < 10; i++) {
         zl_fixed x = ZL_FX_INT(i);
@@ -455,20 +710,43 @@ static void test_capacity_error_before_any_row(void)
     m.vertex_count = 30;
     m.triangle_count = 10;
     zl_state_default(&st);
+    zt_target_packed(&t, frame_color, frame_depth, W, H, ZL_FORMAT_RGB565);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &t));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
     config_for(&cfg, ZL_FORMAT_RGB565, 1);
     cfg.max_active = 9;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
-    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_render(&f, count_calls, &calls));
-    TEST_ASSERT_EQUAL_INT(0, calls);
+    copy.color = band_color;
+    copy.depth = band_depth;
+    TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, zt_band_copy_fn, &copy));
+    TEST_ASSERT_EQUAL_MEMORY(frame_color, band_color, W * H * 2);
+    TEST_ASSERT_EQUAL_MEMORY(frame_depth, band_depth, W * H * 2);
     TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).active);
     TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).triangles);
+    TEST_ASSERT_EQUAL_UINT32(2 * H, zl_frame_needs(&f).replans); /* every row in two passes: 9, then 1 */
+    /* over capacity too, a mesh after the first band is refused (the frame goes on) */
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_next_band(&f, &(zl_band){0}));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_ARG, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_UINT32(2, zl_frame_needs(&f).replans);
     cfg.max_active = 10;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
     TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, count_calls, &calls));
     TEST_ASSERT_EQUAL_INT(H, calls);
+    TEST_ASSERT_EQUAL_UINT32(0, zl_frame_needs(&f).replans);
+    cfg.max_triangles = 0;
+    calls = 0;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(ZL_ERR_CAPACITY, zl_frame_render(&f, count_calls, &calls));
+    TEST_ASSERT_EQUAL_INT(0, calls);
+    TEST_ASSERT_EQUAL_UINT32(10, zl_frame_needs(&f).triangles);
     /* Gouraud needs a frame sized for it. */
+    cfg.max_triangles = 10;
     cfg.gouraud = 0;
     st.shading = ZL_SHADE_GOURAUD;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, bg, 65535));
@@ -577,7 +855,10 @@ int main(void)
     RUN_TEST(test_random_styled_scenes_identical_in_every_band_height);
     RUN_TEST(test_styles_need_a_styled_frame);
     RUN_TEST(test_sizes_are_exact_and_checked);
-    RUN_TEST(test_capacity_error_before_any_row);
+    RUN_TEST(test_capacity_over_and_error);
+#ifndef ZT_FRAME_DUAL
+    RUN_TEST(test_over_capacity_ties_and_blending_match_reference);
+#endif
     RUN_TEST(test_pull_form_and_double_buffering);
     RUN_TEST(test_many_triangles_few_active);
 #ifdef ZT_FRAME_DUAL

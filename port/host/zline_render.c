@@ -1335,10 +1335,13 @@ static zl_status frame_submit(const options *o, const zl_mesh *mesh, const zl_ma
 /*
  * Scanline and band mode. The first try sizes the frame for one record per
  * triangle, enough for most scenes. A clipped triangle can be several pieces
- * in a row (up to 8), so a scene can need more: the planning of the first
- * band then fails with ZL_ERR_CAPACITY before any row is drawn or written,
- * and the frame is sized again from what zl_frame_needs reports and
- * rendered once more. So these modes render whatever frame mode renders
+ * in a row (up to 8), so a scene can need more: the frame then comes out
+ * over capacity, the same bytes, planned again by the library (slower,
+ * zline.h). Only when one triangle alone does not fit (a model of fewer
+ * than 8 triangles, one of them clipped into more pieces) does the first
+ * band fail with ZL_ERR_CAPACITY before any row is drawn or written: the
+ * frame is then sized again from what zl_frame_needs reports and rendered
+ * once more. So these modes render whatever frame mode renders
  * (below the library's caps of 65535 primitives and 65534 records a row).
  */
 static int render_bands(const options *o, const zl_mesh *mesh, const zl_mat4 *mvp,

@@ -9,6 +9,13 @@
  *                                      count: valgrind --tool=callgrind
  *                                      --toggle-collect=render_once
  *                                      --toggle-collect=render_frame_once ...
+ *   zline-bench-modes MODEL --only M --over K
+ *                                      the same with max_triangles and
+ *                                      max_active K times below the scene's
+ *                                      needs (at least 1 and 9): the frame
+ *                                      rendered over capacity (issue 25),
+ *                                      its image checked against frame mode
+ *                                      after the measured render
  *
  * RAM in the frame-API modes is the library's own zl_frame_bytes() for
  * capacities set to what the scene needs (zl_frame_needs after a planning
@@ -182,20 +189,30 @@ int main(int argc, char **argv)
     zl_frame_needs_t needs;
     unsigned i;
     int failed = 0;
-    if (argc != 2 && !(argc == 4 && strcmp(argv[2], "--only") == 0)) {
-        fprintf(stderr, "usage: %s MODEL [--only frame|scanline|band=N]\n", argv[0]);
+    if (argc != 2 && !(argc == 4 && strcmp(argv[2], "--only") == 0) &&
+        !(argc == 6 && strcmp(argv[2], "--only") == 0 && strcmp(argv[4], "--over") == 0 && atoi(argv[5]) >= 2)) {
+        fprintf(stderr, "usage: %s MODEL [--only frame|scanline|band=N [--over K]]\n", argv[0]);
         return 2;
     }
     if (bench_scene_load(argv[1], &obj, &s.mesh, &s.mvp, &s.state) != 0)
         return 2;
     render_frame_mode(&s);
     needs = scene_needs(&s);
-    if (argc == 4) {
+    if (argc == 6) { /* over capacity: K times below the needs */
+        uint32_t k = (uint32_t)atoi(argv[5]);
+        needs.triangles = needs.triangles / k > 1u ? needs.triangles / k : 1u;
+        needs.active = needs.active / k > 9u ? needs.active / k : 9u;
+    }
+    if (argc >= 4) {
         int band = parse_band(argv[3]);
         if (strcmp(argv[3], "frame") == 0) {
             render_frame_once(&s);
         } else if (band >= 1 && band <= BENCH_H) {
             render_frame_api(&s, (uint16_t)band, needs, 1);
+            if (argc == 6 && render_frame_api(&s, (uint16_t)band, needs, 0).mismatched_rows != 0) {
+                fprintf(stderr, "over capacity: the image differs from frame mode\n");
+                failed = 1;
+            }
         } else {
             fprintf(stderr, "unknown mode %s\n", argv[3]);
             return 2;

@@ -152,12 +152,12 @@ MUTATIONS = [
      "OBJ: bytes in ignored names rejected"),
     # --- faults mid-frame (issue 26) ----------------------------------------
     ("frame-zeroed-mesh-accepted", "zl_frame.c",
-     "    if (f == NULL || state == NULL || f->planned || f->depth_band == NULL)",
-     "    if (f == NULL || state == NULL || f->planned)",
+     "    if (f == NULL || state == NULL || f->planned || f->over || f->depth_band == NULL)",
+     "    if (f == NULL || state == NULL || f->planned || f->over)",
      "zl_frame_add_mesh reads a zl_frame that zl_frame_begin never set up"),
     ("frame-mesh-after-band-accepted", "zl_frame.c",
-     "    if (f == NULL || state == NULL || f->planned || f->depth_band == NULL)",
-     "    if (f == NULL || state == NULL || f->depth_band == NULL)",
+     "    if (f == NULL || state == NULL || f->planned || f->over || f->depth_band == NULL)",
+     "    if (f == NULL || state == NULL || f->over || f->depth_band == NULL)",
      "a mesh added after the first band of the frame"),
     # --- PNM reading (issue 26) ---------------------------------------------
     ("pnm-maxval-256-one-byte", "zl_pnm.c",

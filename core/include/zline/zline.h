@@ -839,9 +839,31 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  *                  8 x the sum of triangle_count always suffices when
  *                  that is below the cap; zl_frame_needs() gives the exact
  *                  figure of a scene
- * When the submitted scene needs more, the first zl_frame_next_band fails
- * with ZL_ERR_CAPACITY before drawing anything, and zl_frame_needs() tells
- * the capacities it needs.
+ * Over capacity (issue 25): when the submitted scene needs more triangles
+ * or active records than the buffer holds, zl_frame_next_band does not fail:
+ * the frame still comes out complete and byte-identical to frame mode. The
+ * rows are then planned a window at a time (the longest run of whole bands
+ * whose primitives fit one plan, rendered band after band from it); a band
+ * where not even that fits is rendered in passes over consecutive ranges of
+ * primitives in submission order, into the same band colour and depth, so
+ * every pixel still sees the primitives in submission order (depth ties and
+ * blending as in frame mode). A plan's primitives that start above its
+ * first row are first walked there without writing. zl_frame_needs() still
+ * reports the true needs, and `replans` the plans made after the whole
+ * frame's (0 when the scene fitted: check it to know that it happened).
+ * Cost: every window or band classifies every primitive again, up to three
+ * times (find the window, count, place), so a frame over capacity is much
+ * slower: the bunny on the host (callgrind, tools/bench/zline-bench-modes
+ * MODEL --only MODE --over K) 2.17 M instructions in scanline mode within
+ * capacity, 192 M at half its capacities, 235 M at a tenth; in bands of 16
+ * rows 2.14 M, 23.4 M, 23.7 M. Size for the needs (zl_frame_bound), and
+ * treat replans as a warning. Frames that fit take the same path as before.
+ * ZL_ERR_CAPACITY remains, before any band, only when one primitive alone
+ * does not fit (max_triangles 0, or fewer active records than its pieces:
+ * up to 8 for a clipped triangle, 3 for the lines or points of a polygon
+ * mode), and for the parts of a split frame (zl_frame_split), which are not
+ * planned again. max_meshes and max_vertices do not depend on the pose:
+ * over them zl_frame_add_mesh fails with ZL_ERR_CAPACITY as before.
  *
  * Order and faults: zl_frame_begin first (a zeroed zl_frame is refused with
  * ZL_ERR_ARG by every other call); meshes, lines and outlines before the
@@ -886,6 +908,10 @@ typedef struct {
 typedef struct {
     uint32_t triangles;   /* visible triangles kept for the frame */
     uint32_t active;      /* bound on triangles crossing one row at once */
+    uint32_t replans;     /* plans after the whole frame's: 0 when the scene
+                             fitted the buffer; over capacity one per window
+                             of bands and per pass of a band (see Sizing
+                             above); zl_vis_needs: always 0 */
 } zl_frame_needs_t;
 
 /* Private bookkeeping; the caller allocates it but never touches it. */
@@ -903,6 +929,8 @@ typedef struct {
     uint8_t part;            /* 0: a whole frame; 1, 2: the first, second part of a split one */
     uint8_t prepared;        /* a part: zl_frame_prepare done */
     uint16_t split_row;      /* a part: the row asked of zl_frame_split (0: balanced) */
+    uint8_t over;            /* over capacity: planned by windows of bands, `planned` stays 0 */
+    uint16_t over_end;       /* over capacity: the rows the current window's plan covers end here */
     uint16_t mesh_count;
     uint32_t vertex_count;
     uint32_t triangle_total;

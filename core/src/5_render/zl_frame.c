@@ -231,7 +231,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
     zl_frame_mesh *m;
     zl_status st = ZL_OK;
     int cached = 0;
-    if (f == NULL || state == NULL || f->planned || f->depth_band == NULL) /* planned, or never begun */
+    if (f == NULL || state == NULL || f->planned || f->over || f->depth_band == NULL) /* planned, or never begun */
         return ZL_ERR_ARG;
     if (lines == NULL && outline == NULL)
         st = check_and_cache(f, mesh, mvp, state, &cached);

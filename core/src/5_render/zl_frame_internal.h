@@ -2,7 +2,8 @@
 /*
  * Stage 5, render: the records of scanline and band mode shared by its three
  * files (zl_frame.c submission, zl_frame_plan.c planning, zl_frame_rows.c
- * rows). Calls run rows -> plan -> submission helpers, never back.
+ * rows, zl_frame_over.c planning over capacity). Calls run rows -> over ->
+ * plan -> submission helpers, never back.
  */
 #ifndef ZL_FRAME_INTERNAL_H
 #define ZL_FRAME_INTERNAL_H
@@ -86,5 +87,19 @@ int zl_frame_layout(const zl_frame_config *c, layout *l);
 void zl_frame_split_resolve(zl_frame *f);
 /* Planning, on the first band (zl_frame_plan.c). */
 zl_status zl_frame_plan(zl_frame *f);
+/* Over capacity's classification of primitive t of mesh record mi, the
+ * count pass's fast case (zl_frame_plan.c): a filled triangle whose three
+ * vertices are cached inside gives 1 and its rows [*first, *end), or 0 when
+ * it draws nothing; -1 for every other primitive (the general case). */
+int zl_frame_rows_cached(const zl_frame *f, unsigned mi, uint32_t t, int32_t *first, int32_t *end);
+/* Over capacity (zl_frame_over.c): after zl_frame_plan's ZL_ERR_CAPACITY on
+ * a whole frame, check that every primitive fits alone (else
+ * ZL_ERR_CAPACITY). Then, a band at a time from row r0: the end of the
+ * longest window of whole bands from r0 that one plan holds (r0 when not
+ * even one band does), and the plan of rows [r0, r1) from primitive id_lo
+ * on, as many as fit (*id_hi: the first left out). */
+zl_status zl_frame_over_begin(zl_frame *f);
+uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0);
+void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t *id_hi);
 
 #endif /* ZL_FRAME_INTERNAL_H */

@@ -169,6 +169,24 @@ static ZL_ALWAYS_INLINE int classify_cached(const zl_cached_vertex *a, const zl_
     return first_centre_at_or_after(xmin) < width && first_centre_at_or_after(xmax) > 0;
 }
 
+int zl_frame_rows_cached(const zl_frame *f, unsigned mi, uint32_t t, int32_t *first, int32_t *end)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    const zl_style *sty = style_of(f, mi);
+    const uint16_t *idx;
+    const zl_cached_vertex *cache = cache_of(f) + m->vert_base, *c0, *c1, *c2;
+    if (sty != NULL && (ext_of(f, mi)->is_lines || sty->polygon_front != ZL_POLY_FILL ||
+                        sty->polygon_back != ZL_POLY_FILL))
+        return -1;
+    idx = m->mesh.indices + (size_t)t * 3u;
+    c0 = &cache[idx[0]];
+    c1 = &cache[idx[1]];
+    c2 = &cache[idx[2]];
+    if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID)
+        return -1;
+    return classify_cached(c0, c1, c2, (int)m->cull_code - 1, f->cfg.width, f->cfg.height, first, end);
+}
+
 /* Filled triangle t that needs clipping (or is dropped): the row range of
  * every fan triangle of its polygon. Out of line, so the polygon is not on
  * the stack (nor in the registers) of the loop below. */

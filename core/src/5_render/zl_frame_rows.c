@@ -567,6 +567,108 @@ static ZL_NOINLINE void catch_up(zl_frame *f)
         render_row(f, y, f->color_band[0], zrow);
 }
 
+/* Over capacity: the rows above r0 of the plan's primitives that start
+ * there, walked without writing a pixel: every mesh's span width set to 0,
+ * so every span, line run and point is clipped away, which brings their
+ * records to row r0 exactly as a whole walk would. */
+static ZL_NOINLINE void dry_rows(zl_frame *f, uint16_t r0, uint8_t *crow, uint16_t *zrow)
+{
+    uint16_t y = 0, mi;
+    while (y < r0 && f->row_start[y] == 0) /* bucket ends: empty before the first */
+        y++;
+    if (y >= r0)
+        return;
+    for (mi = 0; mi < f->mesh_count; mi++)
+        f->meshes[mi].span.width = 0;
+    for (; y < r0; y++)
+        render_row(f, y, crow, zrow);
+    for (mi = 0; mi < f->mesh_count; mi++)
+        f->meshes[mi].span.width = f->cfg.width;
+}
+
+/* Over capacity (zl_frame_over.c plans): the band of `rows` rows at
+ * next_row into `color` and the depth band, from the current window's plan,
+ * or from a new window's, or in slices of primitives when not even the band
+ * fits one plan. */
+static ZL_NOINLINE zl_status over_band(zl_frame *f, uint16_t rows, uint8_t *color)
+{
+    uint16_t r, w = f->cfg.width, r0 = f->next_row, r1 = (uint16_t)(f->next_row + rows);
+    size_t bpp = zl_format_bytes((zl_format)f->cfg.format);
+    uint32_t id_lo = 0;
+    uint8_t pix[3] = {0, 0, 0};
+    pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
+    for (r = 0; r < rows; r++) { /* zl_frame_next_band's clear */
+        uint8_t *crow = color + (size_t)r * w * bpp;
+        uint16_t i;
+        for (i = 0; i < w; i++)
+            memcpy(crow + (size_t)i * bpp, pix, bpp);
+        zl_fill16(f->depth_band + (size_t)r * w, f->clear_depth, w);
+    }
+    if (r0 >= f->over_end) { /* a new window, when its first band fits one plan */
+        uint16_t end = zl_frame_over_window(f, r0);
+        if (end > r0) {
+            uint32_t id_hi;
+            zl_frame_over_slice(f, r0, end, 0, &id_hi); /* takes them all: the window counted them */
+            f->needs.replans++;
+            dry_rows(f, r0, color, f->depth_band);
+            f->over_end = end;
+        }
+    }
+    if (r0 < f->over_end) { /* the window's plan: its records go on from the band above */
+        for (r = 0; r < rows; r++)
+            render_row(f, (uint16_t)(r0 + r), color + (size_t)r * w * bpp, f->depth_band + (size_t)r * w);
+        return ZL_OK;
+    }
+    while (id_lo < f->triangle_total) {
+        uint32_t id_hi;
+        zl_frame_over_slice(f, r0, r1, id_lo, &id_hi);
+        f->needs.replans++;
+        if (id_hi == id_lo) /* cannot happen: zl_frame_over_begin checked every primitive alone */
+            return ZL_ERR_CAPACITY;
+        dry_rows(f, r0, color, f->depth_band);
+        for (r = 0; r < rows; r++)
+            render_row(f, (uint16_t)(r0 + r), color + (size_t)r * w * bpp, f->depth_band + (size_t)r * w);
+        id_lo = id_hi;
+    }
+    return ZL_OK;
+}
+
+/* Describe the band of `rows` rows at next_row in `color` and move on. */
+static ZL_ALWAYS_INLINE void band_done(zl_frame *f, zl_band *band, uint16_t rows, uint8_t *color, uint16_t w,
+                                        size_t bpp)
+{
+    band->first_row = f->next_row;
+    band->rows = rows;
+    band->width = w;
+    band->format = f->cfg.format;
+    band->color = color;
+    band->color_stride = (int32_t)(w * bpp);
+    band->depth = f->depth_band;
+    band->depth_stride = (int32_t)w * 2;
+    f->next_row = (uint16_t)(f->next_row + rows);
+    if (f->cfg.color_buffers == 2)
+        f->band_index ^= 1u;
+}
+
+/* zl_frame_next_band over capacity (f->over): the band in
+ * slices (zl_frame_over.c). Its own function, so the bands of a frame that
+ * fits test nothing more than before. */
+static ZL_NOINLINE zl_status next_band_over(zl_frame *f, zl_band *band)
+{
+    uint16_t rows = (uint16_t)(f->end_row - f->next_row);
+    uint8_t *color = f->color_band[f->band_index];
+    zl_status st;
+    if (f->next_row >= f->end_row)
+        return ZL_DONE;
+    if (rows > f->cfg.band_rows)
+        rows = f->cfg.band_rows;
+    st = over_band(f, rows, color);
+    if (st != ZL_OK)
+        return st;
+    band_done(f, band, rows, color, f->cfg.width, zl_format_bytes((zl_format)f->cfg.format));
+    return ZL_OK;
+}
+
 zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
 {
     uint16_t rows, r, w;
@@ -578,8 +680,18 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
      * with ZL_ERR_ARG (tests/test_frame_faults.c). */
     if (f == NULL || band == NULL)
         return ZL_ERR_ARG;
-    if (!f->planned) {
-        zl_status st = zl_frame_plan(f);
+    if (!f->planned) { /* first band, or over capacity (then planned stays 0: no test added per band) */
+        zl_status st;
+        if (f->over)
+            return next_band_over(f, band);
+        st = zl_frame_plan(f);
+        if (st == ZL_ERR_CAPACITY && f->part == 0) { /* a whole frame: band by band */
+            st = zl_frame_over_begin(f);
+            if (st != ZL_OK)
+                return st;
+            f->over = 1;
+            return next_band_over(f, band);
+        }
         if (st != ZL_OK)
             return st;
         f->planned = 1;
@@ -611,17 +723,7 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
         zl_fill16(zrow, f->clear_depth, w);
         render_row(f, (uint16_t)(f->next_row + r), crow, zrow);
     }
-    band->first_row = f->next_row;
-    band->rows = rows;
-    band->width = w;
-    band->format = f->cfg.format;
-    band->color = color;
-    band->color_stride = (int32_t)(w * bpp);
-    band->depth = f->depth_band;
-    band->depth_stride = (int32_t)w * 2;
-    f->next_row = (uint16_t)(f->next_row + rows);
-    if (f->cfg.color_buffers == 2)
-        f->band_index ^= 1u;
+    band_done(f, band, rows, color, w, bpp);
     return ZL_OK;
 }
 
@@ -641,6 +743,6 @@ int zl_frame_render(zl_frame *f, zl_band_fn fn, void *user)
 
 zl_frame_needs_t zl_frame_needs(const zl_frame *f)
 {
-    zl_frame_needs_t none = {0, 0};
+    zl_frame_needs_t none = {0, 0, 0};
     return f ? f->needs : none;
 }

@@ -73,7 +73,7 @@ zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_
     uint8_t *w = work;
     if (f == NULL || second == NULL || work == NULL || second == f || ((uintptr_t)work & 7u) != 0)
         return ZL_ERR_ARG;
-    if (f->depth_band == NULL || f->planned || f->part != 0 || !zl_frame_layout(&f->cfg, &l))
+    if (f->depth_band == NULL || f->planned || f->over || f->part != 0 || !zl_frame_layout(&f->cfg, &l))
         return ZL_ERR_ARG; /* never begun, planned or split already */
     if (work_bytes < part_bytes(&l))
         return ZL_ERR_SIZE;

@@ -168,7 +168,7 @@ zl_status zl_vis_add_mesh(zl_vis *v, const zl_mesh *mesh, const zl_mat4 *mvp, co
 
 zl_frame_needs_t zl_vis_needs(const zl_vis *v)
 {
-    zl_frame_needs_t none = {0, 0};
+    zl_frame_needs_t none = {0, 0, 0};
     return v ? v->needs : none;
 }
 

@@ -184,7 +184,7 @@ static int run_method(const scene *s, int m)
 {
     const char *name = method_names[m];
     zl_vec3 eye = {0, 0, ZL_FX_ONE * 7 / 2}; /* scenes.c's bunny camera, model space */
-    zl_frame_needs_t needs = {0, 0};
+    zl_frame_needs_t needs = {0, 0, 0};
     size_t bytes = 0, ram = 0, frame = (size_t)W * H * 2;
     unsigned mk;
     int bad = 0;

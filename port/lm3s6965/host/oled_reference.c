@@ -51,7 +51,7 @@ int main(int argc, char **argv)
     static uint64_t work[65536 / 8];
     static grey_image img;
     zl_frame_config cfg;
-    zl_frame_needs_t most = {0, 0};
+    zl_frame_needs_t most = {0, 0, 0};
     size_t bytes;
     int i;
     if (argc != 2) {

@@ -1,0 +1,192 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Stage 5, render: scanline and band mode over capacity (issue 25), its
+ * planning; zl_frame_rows.c's over_band renders the bands. When the whole
+ * frame's plan does not fit the work buffer (more visible primitives than
+ * max_triangles, or more crossing a row than max_active), the rows are
+ * planned a window at a time: the longest run of whole bands whose
+ * primitives fit one plan (zl_frame_over_window), rendered band after band
+ * from that plan. A band where not even that fits is rendered in slices
+ * (zl_frame_over_slice): a slice keeps, in submission order, the primitives
+ * crossing the band's rows from a first id on, as many as fit; the band is
+ * rendered slice after slice into the same colour and depth rows, so every
+ * pixel still sees the primitives in id order (depth ties and blending as
+ * in frame mode). Each window or band classifies every primitive once more
+ * to find its window, and each plan twice more (count, then place): the
+ * cost of the fallback, paid only over capacity; the normal path is
+ * untouched.
+ */
+#include <string.h>
+
+#include "zl_frame_internal.h"
+#include "../3_raster/zl_raster.h"
+
+/* Row range [*first, *end) of primitive t of mesh record mi and the active
+ * records it takes (its pieces); 0 when it draws nothing. The same
+ * classification as zl_frame_plan.c's passes, in its general form. */
+static ZL_NOINLINE unsigned prim_rows(const zl_frame *f, unsigned mi, uint32_t t, int32_t *first, int32_t *end)
+{
+    const zl_frame_mesh *m = &f->meshes[mi];
+    const zl_style *sty = style_of(f, mi);
+    zl_source s;
+    zl_poly poly;
+    unsigned k, n, pieces = 0;
+    int cached = zl_frame_rows_cached(f, mi, t, first, end);
+    if (cached >= 0) /* a filled triangle cached inside: one piece, or none */
+        return (unsigned)cached;
+    *first = INT16_MAX;
+    *end = 0;
+    source_of(f, m, &s);
+    if (sty != NULL && ext_of(f, mi)->is_lines) {
+        zl_active rec;
+        if (!prim_record(f, mi, &s, t, &rec))
+            return 0;
+        *first = rec.row;
+        *end = rec.end;
+        return 1;
+    }
+    if (!zl_tri_polygon_geom(&s, sty, t, &poly))
+        return 0;
+    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL)) {
+        poly.light = 255; /* the colour does not matter for the rows */
+        poly.flat.r = poly.flat.g = poly.flat.b = 0;
+        n = zl_tri_pieces(&s, sty, t, &poly);
+        for (k = 0; k < n; k++) {
+            zl_active rec;
+            if (!zl_tri_piece(&s, sty, t, &poly, k, &rec, NULL, NULL))
+                continue;
+            pieces++;
+            *first = rec.row < *first ? rec.row : *first;
+            *end = rec.end > *end ? rec.end : *end;
+        }
+        return pieces;
+    }
+    for (k = 1; k + 1 < poly.n; k++) {
+        int32_t a, b;
+        if (!zl_tri_classify(&poly.v[0], &poly.v[k], &poly.v[k + 1], &m->state, s.width, s.height, &a, &b))
+            continue;
+        pieces++;
+        *first = a < *first ? a : *first;
+        *end = b > *end ? b : *end;
+    }
+    return pieces;
+}
+
+/* Mesh record of primitive id, from record mi on (ids rise with records). */
+static unsigned mesh_from(const zl_frame *f, unsigned mi, uint32_t id)
+{
+    while (mi + 1u < f->mesh_count && id >= f->meshes[mi + 1u].tri_base)
+        mi++;
+    return mi;
+}
+
+/* Whether a primitive of `pieces` records on rows [first, end) still fits
+ * the slice's per-row counts cnt of rows [r0, r1); if so it is counted. */
+static int take_rows(uint32_t *cnt, const zl_frame *f, int32_t r0, int32_t r1, int32_t first, int32_t end,
+                     unsigned pieces)
+{
+    int32_t y, lo = first > r0 ? first : r0, hi = end < r1 ? end : r1;
+    for (y = lo; y < hi; y++)
+        if (cnt[y - r0] + pieces > f->cfg.max_active)
+            return 0;
+    for (y = lo; y < hi; y++)
+        cnt[y - r0] += pieces;
+    return 1;
+}
+
+/* Plan the slice of rows [r0, r1) from primitive id_lo: the primitives
+ * crossing those rows, in id order, while max_triangles and max_active
+ * hold, bucketed by first row; *id_hi: the id the slice stopped before.
+ * The per-row counts borrow the pool, whose region (with the Gouraud one
+ * after it) holds height + 1 int32 (zl_frame_layout). */
+void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t *id_hi)
+{
+    uint32_t *cnt = (uint32_t *)(void *)f->pool;
+    uint32_t id, n = 0, start = 0, slot;
+    unsigned mi = 0;
+    uint16_t j, h = f->cfg.height;
+    memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
+    memset(cnt, 0, (size_t)(r1 - r0) * sizeof(uint32_t));
+    for (id = id_lo; id < f->triangle_total; id++) {
+        int32_t first, end;
+        unsigned pieces;
+        mi = mesh_from(f, mi, id);
+        pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
+        if (pieces == 0 || first >= r1 || end <= r0)
+            continue;
+        if (n >= f->cfg.max_triangles || !take_rows(cnt, f, r0, r1, first, end, pieces))
+            break;
+        f->row_start[first]++;
+        n++;
+    }
+    *id_hi = id;
+    for (j = 0; j <= h; j++) { /* counts -> bucket starts */
+        uint16_t c = f->row_start[j];
+        f->row_start[j] = (uint16_t)start;
+        start += c;
+    }
+    for (id = id_lo, mi = 0; id < *id_hi; id++) { /* place: visible[] bucket by bucket, ids in order */
+        int32_t first, end;
+        mi = mesh_from(f, mi, id);
+        if (prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end) != 0 && first < r1 && end > r0)
+            f->visible[f->row_start[first]++] = (uint16_t)id;
+    }
+    for (slot = 0; slot < f->cfg.max_active; slot++)
+        f->pool[slot].next = (uint16_t)(slot + 1u < f->cfg.max_active ? slot + 1u : ZL_LIST_END);
+    f->free_head = 0;
+    f->active_head = ZL_LIST_END;
+}
+
+/* The end of the longest window of whole bands from row r0 whose
+ * primitives fit in one plan: those crossing it at most max_triangles, at
+ * most max_active records on each of its rows; r0 when not even its first
+ * band fits (then the band goes in slices). One classification pass: the
+ * primitives reaching r0 or below counted at their first row there
+ * (row_start) and their records over their rows (a difference array in the
+ * pool, as planning's). */
+uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
+{
+    int32_t *diff = (int32_t *)(void *)f->pool;
+    uint16_t h = f->cfg.height, y, end_ok = r0;
+    uint32_t id, kept = 0, active = 0;
+    unsigned mi = 0;
+    memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
+    memset(diff, 0, ((size_t)h + 1) * sizeof(int32_t));
+    for (id = 0; id < f->triangle_total; id++) {
+        int32_t first, end;
+        unsigned pieces;
+        mi = mesh_from(f, mi, id);
+        pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
+        if (pieces == 0 || end <= r0)
+            continue;
+        if (first < r0)
+            first = r0;
+        f->row_start[first]++;
+        diff[first] += (int32_t)pieces;
+        diff[end] -= (int32_t)pieces;
+    }
+    for (y = r0; y < f->end_row; y++) {
+        kept += f->row_start[y];
+        active = (uint32_t)((int32_t)active + diff[y]);
+        if (kept > f->cfg.max_triangles || active > f->cfg.max_active)
+            break;
+        if ((uint16_t)(y + 1u) % f->cfg.band_rows == 0 || y + 1u == f->end_row)
+            end_ok = (uint16_t)(y + 1u);
+    }
+    return end_ok;
+}
+
+zl_status zl_frame_over_begin(zl_frame *f)
+{
+    uint32_t id;
+    unsigned mi = 0;
+    for (id = 0; id < f->triangle_total; id++) {
+        int32_t first, end;
+        unsigned pieces;
+        mi = mesh_from(f, mi, id);
+        pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
+        if (pieces != 0 && (f->cfg.max_triangles == 0 || pieces > f->cfg.max_active))
+            return ZL_ERR_CAPACITY; /* one primitive alone does not fit */
+    }
+    return ZL_OK;
+}
