@@ -12,16 +12,6 @@
 
 #include "zl_geometry.h"
 
-static unsigned bit_length(uint64_t v)
-{
-    unsigned n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
 static int32_t lerp(int32_t a, int32_t b, int64_t t30)
 {
     return (int32_t)(a + zl_floor_shift64(((int64_t)b - a) * t30 + ((int64_t)1 << 29), 30));
@@ -37,7 +27,7 @@ static int64_t intersect(const zl_cvert *in, const zl_cvert *out, int64_t din, i
 {
     int64_t num = din, den = din - dout; /* den > 0, num < den */
     int64_t t;
-    unsigned len = bit_length((uint64_t)den);
+    unsigned len = bit_length64((uint64_t)den);
     if (len > 32) {
         num = zl_floor_shift64(num, len - 32);
         den = zl_floor_shift64(den, len - 32);

@@ -2,22 +2,12 @@
 /* Stage 2, geometry: pseudodepth, the distance -> depth mapping and its
  * precision, in integers. */
 #include "zline/zline.h"
-
-/* Number of significant bits of v. */
-static unsigned bit_length(uint64_t v)
-{
-    unsigned n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
+#include "zl_geometry.h"
 
 /* Shift num and den right together until den fits `bits` bits; keeps the ratio. */
 static void scale_down(int64_t *num, int64_t *den, unsigned bits)
 {
-    unsigned len = bit_length((uint64_t)*den);
+    unsigned len = bit_length64((uint64_t)*den);
     if (len > bits) {
         *num = zl_floor_shift64(*num, len - bits);
         *den = zl_floor_shift64(*den, len - bits);
@@ -56,7 +46,7 @@ zl_fixed zl_depth_resolution(zl_fixed near_z, zl_fixed far_z, zl_fixed z, unsign
     s = ((int64_t)1 << bits) - 1;
     fn = (int64_t)far_z * near_z;    /* < 2^62 */
     x = (int64_t)(far_z - near_z) * z; /* < 2^62 */
-    len = bit_length((uint64_t)fn);
+    len = bit_length64((uint64_t)fn);
     if (len + bits > 62)
         sh = len + bits - 62;
     fn = zl_floor_shift64(fn, sh);
@@ -66,7 +56,7 @@ zl_fixed zl_depth_resolution(zl_fixed near_z, zl_fixed far_z, zl_fixed z, unsign
         return ZL_FX_MAX;
     num = x;
     /* dz_raw = Z * num / denom: keep num below 2^31 so Z * num fits. */
-    len = bit_length((uint64_t)num);
+    len = bit_length64((uint64_t)num);
     if (len > 31) {
         num = zl_floor_shift64(num, len - 31);
         denom = zl_floor_shift64(denom, len - 31);

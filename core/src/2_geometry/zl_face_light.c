@@ -20,25 +20,10 @@ typedef struct {
     int64_t p[3];
 } fl_light;
 
-static uint64_t mag(int64_t v)
-{
-    return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
-}
-
-static unsigned bit_length(uint64_t v)
-{
-    unsigned n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
 /* Shift v right (floor) until every component is below 2^bits. */
 static void shrink3(int64_t *v, unsigned bits)
 {
-    unsigned len = bit_length(mag(v[0]) | mag(v[1]) | mag(v[2])), k;
+    unsigned len = bit_length64(mag64(v[0]) | mag64(v[1]) | mag64(v[2])), k;
     if (len > bits)
         for (k = 0; k < 3; k++)
             v[k] = zl_floor_shift64(v[k], len - bits);
@@ -53,9 +38,9 @@ static int unit16(const int64_t *vin, int64_t *out)
     unsigned k;
     for (k = 0; k < 3; k++)
         v[k] = vin[k];
-    if ((mag(v[0]) | mag(v[1]) | mag(v[2])) == 0)
+    if ((mag64(v[0]) | mag64(v[1]) | mag64(v[2])) == 0)
         return 0;
-    if ((mag(v[0]) | mag(v[1]) | mag(v[2])) < ((uint64_t)1 << 18)) {
+    if ((mag64(v[0]) | mag64(v[1]) | mag64(v[2])) < ((uint64_t)1 << 18)) {
         sq = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         if (sq >= UNIT_SQ - UNIT_TOLERANCE && sq <= UNIT_SQ + UNIT_TOLERANCE) {
             for (k = 0; k < 3; k++)
@@ -104,8 +89,8 @@ static int to_model(const int64_t *cof, const int64_t *d, int64_t *out)
     for (k = 0; k < 3; k++)
         dd[k] = d[k];
     shrink3(dd, 17); /* a unit Q16 vector is not shifted */
-    len = bit_length(mag(cof[0]) | mag(cof[1]) | mag(cof[2]) | mag(cof[3]) | mag(cof[4]) | mag(cof[5]) |
-                     mag(cof[6]) | mag(cof[7]) | mag(cof[8]));
+    len = bit_length64(mag64(cof[0]) | mag64(cof[1]) | mag64(cof[2]) | mag64(cof[3]) | mag64(cof[4]) | mag64(cof[5]) |
+                     mag64(cof[6]) | mag64(cof[7]) | mag64(cof[8]));
     if (len > 44)
         shift = len - 44; /* products below 2^61, sums below 2^63 */
     for (k = 0; k < 3; k++) /* adj = cof^T: row k of adj is column k of cof */
@@ -194,9 +179,9 @@ static void face_normal(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *
     {
         uint64_t big = 0;
         for (k = 0; k < 6; k++)
-            big = mag(e[k]) > big ? mag(e[k]) : big;
+            big = mag64(e[k]) > big ? mag64(e[k]) : big;
         if (big >= ((uint64_t)1 << 30)) {
-            unsigned sh = bit_length(big) - 30;
+            unsigned sh = bit_length64(big) - 30;
             for (k = 0; k < 6; k++)
                 e[k] = zl_floor_shift64(e[k], sh);
         }
@@ -205,10 +190,10 @@ static void face_normal(const zl_fixed *p0, const zl_fixed *p1, const zl_fixed *
     n[1] = e[2] * e[3] - e[0] * e[5];
     n[2] = e[0] * e[4] - e[1] * e[3];
     {
-        uint64_t big = mag(n[0]) > mag(n[1]) ? mag(n[0]) : mag(n[1]);
-        big = mag(n[2]) > big ? mag(n[2]) : big;
+        uint64_t big = mag64(n[0]) > mag64(n[1]) ? mag64(n[0]) : mag64(n[1]);
+        big = mag64(n[2]) > big ? mag64(n[2]) : big;
         if (big >= ((uint64_t)1 << 14)) {
-            unsigned sh = bit_length(big) - 14;
+            unsigned sh = bit_length64(big) - 14;
             for (k = 0; k < 3; k++)
                 n[k] = zl_floor_shift64(n[k], sh);
         }

@@ -53,6 +53,22 @@ ZL_SHARED_STATIC int in_limit(zl_fixed v)
     return (uint32_t)v + COORD_LIMIT <= 2u * COORD_LIMIT;
 }
 
+/* Bit length of v (0 for 0): the 64-bit scaling of the geometry stage. */
+ZL_SHARED_STATIC unsigned bit_length64(uint64_t v)
+{
+    unsigned n = 0;
+    while (v != 0) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+
+ZL_SHARED_STATIC uint64_t mag64(int64_t v)
+{
+    return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
+}
+
 ZL_SHARED_STATIC uint32_t abs32(int32_t v)
 {
     return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;

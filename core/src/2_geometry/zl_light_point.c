@@ -9,21 +9,6 @@
 
 #define QUOTIENT_LIMIT ((uint64_t)1 << 46) /* Q16.16: 2^30, far beyond any position */
 
-static unsigned bit_length64(uint64_t v)
-{
-    unsigned n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
-static uint64_t magnitude64(int64_t v)
-{
-    return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
-}
-
 /* The entries scaled by one power of two to 20 bits (exact when they grow,
  * floored when they shrink); returns that power (a = a_in 2^-p). */
 static int scale_to_20_bits(int64_t *a, unsigned count)
@@ -31,7 +16,7 @@ static int scale_to_20_bits(int64_t *a, unsigned count)
     uint64_t big = 0;
     unsigned k, len;
     for (k = 0; k < count; k++)
-        big |= magnitude64(a[k]);
+        big |= mag64(a[k]);
     if (big == 0)
         return 0;
     len = bit_length64(big);
@@ -84,7 +69,7 @@ int zl_light_inverse3(const zl_mat4 *model, int64_t inv[9], uint64_t *det_out, i
  * remainder stays below den, so doubling it cannot overflow). */
 static int64_t quotient_pow2(int64_t num, uint64_t den, int s)
 {
-    uint64_t m = magnitude64(num), q = m / den, r = m % den;
+    uint64_t m = mag64(num), q = m / den, r = m % den;
     int i;
     for (i = 0; i < s && q < QUOTIENT_LIMIT; i++) {
         q <<= 1;

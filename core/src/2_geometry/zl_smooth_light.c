@@ -26,22 +26,6 @@ typedef struct {
     int point;
 } sl_light;
 
-/* Bit length of a non-zero magnitude. */
-static unsigned bits64(uint64_t v)
-{
-    unsigned n = 0;
-    while (v != 0) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
-static uint64_t mag64(int64_t v)
-{
-    return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
-}
-
 /* Scale v[0..2] by one power of two so the largest magnitude has `bits`
  * bits (left: exact; right: floor). 0 when every component is 0. */
 static int scale3(int64_t *v, unsigned bits)
@@ -50,7 +34,7 @@ static int scale3(int64_t *v, unsigned bits)
     unsigned len, k;
     if (big == 0)
         return 0;
-    len = bits64(big);
+    len = bit_length64(big);
     for (k = 0; k < 3; k++) {
         if (len > bits)
             v[k] = zl_floor_shift64(v[k], len - bits);
