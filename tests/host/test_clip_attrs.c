@@ -19,7 +19,7 @@
  *     division's rounding) + |c| / 2^14 (the reciprocal's relative error),
  *     plus what the stepped planes drift: each of the at most 1 + W + H
  *     steps from the anchor pixel (zline.h: in the target) is rounded to
- *     half a unit of the plane, 1/4096 texel for an affine plane, 2^16 / Q
+ *     half a unit of the plane, 2^-16 texel for an affine plane, 2^12 / Q
  *     texel for u q, Q = 2^28 w_min / w the pixel's scaled 1/w (w_min the
  *     least w of the clipped polygon, here of the triangle clipped to the
  *     near and far planes: a lower bound). The printed worst distance
@@ -244,7 +244,7 @@ static int near_boundary(long double c, long double tol)
 /* The tolerance (texels) at a pixel whose clip w is w (see the top). */
 static long double tolerance(const tri_ref *t, long double c, long double w, int linear)
 {
-    long double unit = linear ? 1.0L / 4096 : 65536.0L / (268435456.0L * t->wmin / w);
+    long double unit = linear ? 1.0L / 65536 : 4096.0L / (268435456.0L * t->wmin / w);
     return 1.0L / 32 + fabsl(c) / 16384 + (1 + W + H) * unit / 2;
 }
 

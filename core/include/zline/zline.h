@@ -109,7 +109,7 @@
  *   that value except within 1/32 texel + |c| / 2^14 of a texel boundary,
  *   plus the drift of the stepped planes: half a plane unit for each of
  *   the up to 1 + width + height pixel steps from the anchor, a unit being
- *   1/4096 texel (affine) or 2^16 / Q texel, Q = 2^28 w_min / w (the
+ *   2^-16 texel (affine) or 2^12 / Q texel, Q = 2^28 w_min / w (the
  *   pixel's w against the least w of the clipped polygon), as for an
  *   unclipped triangle. A triangle with a vertex at w <= 0 (across the
  *   eye plane) has no screen-linear interpolation: its affine texture is
@@ -540,25 +540,25 @@ zl_status zl_light_vertices(const zl_lighting *lt, const zl_mat4 *model, const z
  * far_z set) and ZL_FEATURE_EXACT_DEPTH (the default), the texture planes
  * go through the vertices at their unsnapped window positions (2^-16
  * pixel; the set-up solves them with one reciprocal per triangle, the
- * vertex values of u/w and 1/w kept to 1/16 of the plane unit), so the
+ * vertex values of u/w and 1/w kept to the plane unit), so the
  * coordinate at a pixel centre is the exact one of the triangle there
  * (perspective or affine as below; clipped triangles: see Clipping) but
  * for the stepped planes' drift: half a plane unit for each of the up to
- * 1 + width + height pixel steps from the anchor, a unit being 1/4096
- * texel (affine) or 2^-12 w / w_min texel (perspective; w_min the
- * triangle's least clip w, w the pixel's). The texel sampled (nearest) is
+ * 1 + width + height pixel steps from the anchor, a unit being 2^-16
+ * texel (affine) or 2^-16 w / w_min texel (perspective; w_min the
+ * triangle's least clip w, w the pixel's): at most 1/234 texel on a
+ * 320x240 target where w / w_min <= 1. The texel sampled (nearest) is
  * the one containing that exact coordinate except within 1/64 texel plus
  * that drift of a texel boundary, and bilinear weights are within 1/16
  * (plus the drift) of exact. Measured per pixel against a long double
  * reference by tests/host/test_texel_exact.c (perspective floors from
  * above, at a grazing angle and across the near plane; 64x64 and 48x40
  * random textures, RGB565 and RGBA4444, affine and perspective, frame and
- * scanline mode): from above every pixel beyond 1/64 texel of a boundary
- * takes the exact texel; at the grazing angle 0.25 % of them and across
- * the near plane 0.13 % take a neighbour within the drift bound (at most
- * 0.056 texel from the boundary); pixels where the coordinate changes by
- * more than 16 texels per pixel (a floor's horizon) are not covered by
- * the bound. Without the exact mapping, or with ZL_FEATURE_EXACT_DEPTH 0,
+ * scanline mode): every pixel beyond 1/64 texel of a boundary takes the
+ * exact texel (none needs the drift; with the 12 fraction bits the planes
+ * had before, 0.1 to 0.5 % took a neighbour); pixels where the coordinate
+ * changes by more than 16 texels per pixel (a floor's horizon) are not
+ * covered by the bound. Without the exact mapping, or with ZL_FEATURE_EXACT_DEPTH 0,
  * the planes go through the snapped vertices (1/16 pixel): the coordinate
  * is then that of the snapped triangle, which is off by up to 1/32 pixel
  * times its gradient (measured on the same floors before this change:

@@ -20,6 +20,16 @@
 #define ZL_SUB_HALF (ZL_SUB_ONE / 2)         /* offset of a pixel centre */
 #define ZL_MAX_POLY 10                       /* 3 vertices + one per clip plane (7) */
 #define ZL_ATTR_FRAC 20                      /* fraction bits of stepped attributes */
+/* Texture coordinate planes (issue 22: texels exact): an affine plane
+ * steps Q16 texels (ZL_TEX_FRAC), a perspective one u q in units 2^-16 q
+ * texel, read back as (u q r) >> ZL_PERSP_SHIFT in 1/256 texel. With the
+ * 12 fraction bits of before, half a unit of rounding per pixel step added
+ * up to 0.056 texel across a 160x120 target (tests/host/test_texel_exact.c
+ * counted 0.1 to 0.5 % of pixels beyond 1/64 texel of a boundary in a
+ * neighbouring texel); 16 bits make it 1/16 of that. */
+#define ZL_TEX_FRAC 16
+#define ZL_TEX_SHIFT (ZL_TEX_FRAC - 8)       /* Q16 texels to 1/256 texel */
+#define ZL_PERSP_SHIFT 24
 #define ZL_GRAD_LIMIT ((int64_t)1 << 43)     /* clamp of a per-pixel attribute gradient */
 
 /* Window-space vertex, after projection and snapping. */

@@ -470,9 +470,10 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
 
 /* zl_texplanes from the original triangle: q = 2^28 wmin / w = 2^28 wmin
  * sum b_i (wmin, the clipped polygon's least clip w, keeps q within 2^28 on
- * the piece, as tex_setup's per-triangle scale does), u q / 2^24 = 16 wmin
- * sum u_i b_i (u in 1/256 texel: |u_i wmin| < 2^54), or affine
- * 16 sum u_i w_i b_i; perspective colour c q / 2^24 in Q16 of 0 .. 255,
+ * the piece, as tex_setup's per-triangle scale does), u q / 2^20 =
+ * 256 wmin sum u_i b_i (u in 1/256 texel: |u_i wmin| < 2^54; units of
+ * 2^-16 q texel, zl_internal.h), or affine 256 sum u_i w_i b_i (Q16
+ * texels); perspective colour c q / 2^24 in Q16 of 0 .. 255,
  * from Q8 colours times light / 255: sum c_i wmin b_i times 2^12 light /
  * 255. A triangle with a vertex at w <= 0 has no screen-linear
  * interpolation: its affine texture is perspective-correct (tp->persp). */
@@ -501,7 +502,7 @@ int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t tri,
                 tex_coords(sty, s->mesh->indices[tri * 3u + i], &c[0], &c[1]);
                 a[i] = (int64_t)c[ch] * (persp ? wmin : w[i]);
             }
-            attr_plane(ch == 0 ? &tp->u : &tp->v, &h, a, 16, 1);
+            attr_plane(ch == 0 ? &tp->u : &tp->v, &h, a, (int64_t)1 << ZL_TEX_SHIFT, 1);
         }
     }
     if (col == NULL)

@@ -114,12 +114,13 @@ static void blend_pixel(uint8_t *p, const zl_span_state *ss, unsigned mode, cons
     put_pixel(p, ss->bpp, pix, ss->keep);
 }
 
-/* persp_apply for |a| >= 2^31, where a r leaves 64 bits: a = hi 2^31 + lo
- * with 0 <= lo < 2^31, so floor(a r / 2^20) = hi r 2^11 + floor(lo r / 2^20)
- * exactly (hi r 2^11 is a whole number). Exact for |a| < 2^51 (a texture
- * coordinate of Q16.16 on a 4096-texel texture gives |a| < 2^41); beyond,
- * saturated (fuzz_style's finding: a r overflowed, undefined behaviour). */
-static ZL_NOINLINE int64_t persp_apply_wide(int64_t a, uint64_t r)
+/* floor(a r / 2^sh) (sh <= 31) for |a| >= 2^31, where a r leaves 64 bits:
+ * a = hi 2^31 + lo with 0 <= lo < 2^31, so floor(a r / 2^sh) =
+ * hi r 2^(31 - sh) + floor(lo r / 2^sh) exactly (the first term is a whole
+ * number). Exact for |a| < 2^51 (a texture coordinate of Q16.16 on a
+ * 4096-texel texture gives |a| < 2^45); beyond, saturated (fuzz_style's
+ * finding: a r overflowed, undefined behaviour). */
+static ZL_NOINLINE int64_t persp_apply_wide(int64_t a, uint64_t r, unsigned sh)
 {
     const int64_t lim = (int64_t)1 << 51;
     int64_t hi, lo;
@@ -127,23 +128,30 @@ static ZL_NOINLINE int64_t persp_apply_wide(int64_t a, uint64_t r)
         return a > 0 ? (int64_t)1 << 62 : -((int64_t)1 << 62);
     hi = zl_floor_shift64(a, 31);
     lo = a - hi * ((int64_t)1 << 31);
-    return hi * (int64_t)(r << 11) + (int64_t)(((uint64_t)lo * r) >> 20);
+    return hi * (int64_t)(r << (31u - sh)) + (int64_t)(((uint64_t)lo * r) >> sh);
 }
 
 /* (a q) / q from the plane value a and r = persp_recip(q), for |a| < 2^31
- * (then a r fits 64 bits: r <= 2^32). The spans that use it check their
- * planes once (persp_fits). */
+ * (then a r fits 64 bits: r <= 2^32): a texture coordinate plane (u q in
+ * units 2^-16 q texel, zl_internal.h) in 1/256 texel. The spans that use
+ * it check their planes once (persp_fits). */
 static ZL_ALWAYS_INLINE int64_t persp_apply_fast(int64_t a, uint64_t r)
 {
-    return zl_floor_shift64(a * (int64_t)r, 20);
+    return zl_floor_shift64(a * (int64_t)r, ZL_PERSP_SHIFT);
 }
 
-/* persp_apply_fast for any a: the wide form where a leaves 31 bits. */
-static inline int64_t persp_apply(int64_t a, uint64_t r)
+/* floor(a r / 2^sh) for any a: the wide form where a leaves 31 bits. */
+static inline int64_t persp_apply_by(int64_t a, uint64_t r, unsigned sh)
 {
     if ((uint64_t)a + ((uint64_t)1 << 31) < ((uint64_t)1 << 32))
-        return persp_apply_fast(a, r);
-    return persp_apply_wide(a, r);
+        return zl_floor_shift64(a * (int64_t)r, sh);
+    return persp_apply_wide(a, r, sh);
+}
+
+/* persp_apply_fast for any a. */
+static inline int64_t persp_apply(int64_t a, uint64_t r)
+{
+    return persp_apply_by(a, r, ZL_PERSP_SHIFT);
 }
 
 /* Whether a perspective plane a, stepped by da, stays within +-2^31 over n
@@ -159,8 +167,9 @@ static int persp_fits(int64_t a, int64_t da, int32_t n)
     return end > -lim && end < lim;
 }
 
-/* Whether an affine coordinate plane (Q12 texels, stepped per pixel) stays
- * within +-2^30 over a span of n pixels: then 32 bits hold it exactly. */
+/* Whether an affine coordinate plane (Q16 texels, ZL_TEX_FRAC, stepped per
+ * pixel) stays within +-2^30 over a span of n pixels (16384 texels): then
+ * 32 bits hold it exactly. */
 static int affine_fits(int64_t a, int64_t da, int32_t n)
 {
     const int64_t lim = (int64_t)1 << 30;
@@ -189,7 +198,7 @@ static inline void span_tex565(unsigned func, const zl_texture *tex, int persp, 
             uint32_t d = depth_of(z);
             if (depth_pass(func, d, zrow[i])) {
                 zrow[i] = (uint16_t)d;
-                crow[i] = texel_at(tex, zl_floor_shift64(u, 4), zl_floor_shift64(v, 4));
+                crow[i] = texel_at(tex, zl_floor_shift64(u, ZL_TEX_SHIFT), zl_floor_shift64(v, ZL_TEX_SHIFT));
             }
             z += dz;
             u += du;
@@ -263,7 +272,7 @@ static ZL_ALWAYS_INLINE void span_persp_repeat(uint32_t leq, const zl_repeat_pow
                                                int64_t dQ)
 {
     const uint16_t *tx = rp->texels;
-    const uint32_t um = rp->umask >> 4, vm = rp->vmask >> 4;
+    const uint32_t um = rp->umask >> ZL_TEX_SHIFT, vm = rp->vmask >> ZL_TEX_SHIFT;
     const unsigned s = rp->s;
     const uint16_t *zend = zrow + n;
     uint64_t r = persp_recip(Q);
@@ -305,7 +314,7 @@ static ZL_NOINLINE void span_persp1_repeat(uint32_t leq, const zl_repeat_pow2 *r
                                            int64_t dV, int64_t Q, int64_t dQ)
 {
     const uint16_t *tx = rp->texels;
-    const uint32_t um = rp->umask >> 4, vm = rp->vmask >> 4;
+    const uint32_t um = rp->umask >> ZL_TEX_SHIFT, vm = rp->vmask >> ZL_TEX_SHIFT;
     const unsigned s = rp->s;
     uint64_t r = persp_recip(Q);
     int32_t i;
@@ -461,8 +470,8 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
         uint32_t d = depth_of(z);
         if (tex != NULL) {
             if (!persp) {
-                u8 = zl_floor_shift64(U, 4);
-                v8 = zl_floor_shift64(V, 4);
+                u8 = zl_floor_shift64(U, ZL_TEX_SHIFT);
+                v8 = zl_floor_shift64(V, ZL_TEX_SHIFT);
             } else if (every == 1) {
                 uint64_t r = persp_recip(Q);
                 u8 = persp_apply(U, r);
@@ -508,7 +517,7 @@ static void row_span_ex(const zl_active *t, const zl_gouraud *g, const zl_texpla
                     uint64_t rq = persp_recip(Q);
                     int64_t cc[3];
                     for (k = 0; k < 3; k++) {
-                        cc[k] = zl_floor_shift64(persp_apply(C[k], rq) + (1 << 15), 16);
+                        cc[k] = zl_floor_shift64(persp_apply_by(C[k], rq, 20) + (1 << 15), 16);
                         cc[k] = cc[k] < 0 ? 0 : (cc[k] > 255 ? 255 : cc[k]);
                     }
                     r = (unsigned)cc[0];

@@ -391,9 +391,11 @@ static int fine_frame_init(fine_frame *ff, const zl_wvert *const *v, const int16
     return 1;
 }
 
-/* The Q20 plane through values a0, a1, a2 of `frac` fraction bits (16 or
- * 20, below 2^30) at the vertices of ff: gradients rounded once from the
- * exact quotients (zl_depth_plane_exact's), the anchor value rounded once. */
+/* The Q20 plane through values a0, a1, a2 of `frac` fraction bits (12 to
+ * 20; |a| at most 2^31, so a difference times an edge vector, below
+ * 2^32 2^29.1, keeps the cross products below 2^63) at the vertices of ff:
+ * gradients rounded once from the exact quotients (zl_depth_plane_exact's),
+ * the anchor value rounded once. */
 static void fine_plane(zl_attr *at, const fine_frame *ff, int64_t a0, int64_t a1, int64_t a2, int frac)
 {
     int64_t d1 = a1 - a0, d2 = a2 - a0;
@@ -412,13 +414,16 @@ static void fine_plane(zl_attr *at, const fine_frame *ff, int64_t a0, int64_t a1
 }
 
 /* The vertex values of texture coordinate c (tpoly->u or ->v, 1/256
- * texel) for the planes: Q16 as they are (affine), or u q / 2^24 in Q20
- * from q in Q20 (perspective). */
+ * texel) for the planes: as they are (affine: the planes take them as
+ * Q(ZL_ATTR_FRAC - ZL_TEX_SHIFT), which is Q16 texels per ZL_ATTR_FRAC),
+ * or u q / 2^20 (perspective, from q in Q20: units of 2^-16 q texel,
+ * zl_internal.h). */
 static void tex_values(int64_t *a, const int32_t *c, const size_t *idx, const int64_t *q, int persp)
 {
+    const unsigned sh = 44 - ZL_PERSP_SHIFT; /* with persp_recip's 2^44 / q: (u q / 2^sh) (2^44 / q) / 2^ZL_PERSP_SHIFT = u */
     int k;
     for (k = 0; k < 3; k++)
-        a[k] = persp ? zl_floor_shift64(c[idx[k]] * q[k] + ((int64_t)1 << 23), 24) : c[idx[k]];
+        a[k] = persp ? zl_floor_shift64(c[idx[k]] * q[k] + ((int64_t)1 << (sh - 1)), sh) : c[idx[k]];
 }
 
 /* The q, u and v planes through the unsnapped vertices (fr: residuals, or
@@ -437,11 +442,21 @@ static ZL_NOINLINE int tex_planes_fine(zl_texplanes *tp, const zl_style *sty, co
     fine_plane(&tp->q, &ff, q[0], q[1], q[2], 20);
     if (sty->texture != NULL && sty->texcoords != NULL) {
         tex_values(a, tpoly->u, idx, q, persp);
-        fine_plane(&tp->u, &ff, a[0], a[1], a[2], persp ? 20 : 16);
+        fine_plane(&tp->u, &ff, a[0], a[1], a[2], persp ? ZL_ATTR_FRAC : ZL_ATTR_FRAC - ZL_TEX_SHIFT);
         tex_values(a, tpoly->v, idx, q, persp);
-        fine_plane(&tp->v, &ff, a[0], a[1], a[2], persp ? 20 : 16);
+        fine_plane(&tp->v, &ff, a[0], a[1], a[2], persp ? ZL_ATTR_FRAC : ZL_ATTR_FRAC - ZL_TEX_SHIFT);
     }
     return 1;
+}
+
+/* The vertex values of tex_values as plane_setup takes them (Q16 for a Q20
+ * plane): perspective ones rounded, affine ones moved up (their planes
+ * step Q16 texels, zl_internal.h). */
+static void tex_values_q16(int64_t *a, int persp)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        a[k] = persp ? zl_floor_shift64(a[k] + 8, 4) : a[k] * (1 << (ZL_TEX_SHIFT - 4));
 }
 
 /* The same through the snapped vertices (plane_setup: Q16 values). */
@@ -449,16 +464,14 @@ static void tex_planes_snapped(zl_texplanes *tp, const zl_style *sty, const zl_t
                                const int64_t *q, const plane_frame *pf)
 {
     int64_t a[3];
-    int k, persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
+    int persp = sty->tex_mapping == ZL_TEX_PERSPECTIVE;
     plane_setup(&tp->q, pf, zl_floor_shift64(q[0] + 8, 4), zl_floor_shift64(q[1] + 8, 4), zl_floor_shift64(q[2] + 8, 4));
     if (sty->texture != NULL && sty->texcoords != NULL) {
         tex_values(a, tpoly->u, idx, q, persp);
-        for (k = 0; k < 3 && persp; k++)
-            a[k] = zl_floor_shift64(a[k] + 8, 4);
+        tex_values_q16(a, persp);
         plane_setup(&tp->u, pf, a[0], a[1], a[2]);
         tex_values(a, tpoly->v, idx, q, persp);
-        for (k = 0; k < 3 && persp; k++)
-            a[k] = zl_floor_shift64(a[k] + 8, 4);
+        tex_values_q16(a, persp);
         plane_setup(&tp->v, pf, a[0], a[1], a[2]);
     }
 }

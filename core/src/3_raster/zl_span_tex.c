@@ -188,7 +188,7 @@ static ZL_ALWAYS_INLINE void span_bilinear565(unsigned func, const zl_texture *t
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
         if (depth_pass(func, d, zrow[i])) {
-            int32_t pu = zl_floor_shift32(u, 4) - 128, pv = zl_floor_shift32(v, 4) - 128;
+            int32_t pu = zl_floor_shift32(u, ZL_TEX_SHIFT) - 128, pv = zl_floor_shift32(v, ZL_TEX_SHIFT) - 128;
             unsigned fx = (uint32_t)pu & 255u, fy = (uint32_t)pv & 255u, k, o[3];
             int32_t iu = zl_floor_shift32(pu, 8), iv = zl_floor_shift32(pv, 8);
             uint32_t x0 = tap_pow2(iu, tex->width, tex->wrap_s), x1 = tap_pow2(iu + 1, tex->width, tex->wrap_s);
@@ -426,8 +426,9 @@ static ZL_ALWAYS_INLINE uint32_t bilerp_y(uint32_t top, uint32_t bottom, uint32_
 
 /*
  * span_bilinear565 on a texture that repeats on both axes (zl_repeat_pow2):
- * the taps by masks (p = c - 1/2 is u - 2048 in Q12; its bits 4..11 are
- * the fraction in 1/256, bits 12.. the floor, both kept by wrapping adds),
+ * the taps by masks (p = c - 1/2 is u - 2^(F - 1) in QF, F = ZL_TEX_FRAC;
+ * its bits F - 8 .. F - 1 are the fraction in 1/256, bits F.. the floor,
+ * both kept by wrapping adds),
  * and the first stage (along x) of red and blue in the two 16-bit lanes of
  * a word: c (256 - fx) + c' fx is at most 255 * 256 a lane. The second
  * stage needs 24 bits a channel, so it takes them one by one. Exactly
@@ -438,16 +439,16 @@ static ZL_ALWAYS_INLINE void span_bilinear565_repeat(uint32_t leq, const zl_repe
                                                      uint32_t du, uint32_t v, uint32_t dv)
 {
     const uint16_t *tx = rp->texels;
-    const uint32_t wm = rp->umask >> 12, rm = rp->vmask >> 12, stride = UINT32_C(1) << rp->s;
+    const uint32_t wm = rp->umask >> ZL_TEX_FRAC, rm = rp->vmask >> ZL_TEX_FRAC, stride = UINT32_C(1) << rp->s;
     int32_t i;
-    u -= 2048u;
-    v -= 2048u;
+    u -= UINT32_C(1) << (ZL_TEX_FRAC - 1);
+    v -= UINT32_C(1) << (ZL_TEX_FRAC - 1);
     for (i = 0; i < n; i++) {
         uint32_t d = depth_of(z);
         if (pass_lt_leq(d, zrow[i], leq)) {
-            uint32_t fx = (u >> 4) & 255u, fy = (v >> 4) & 255u, gx = 256u - fx;
-            uint32_t x0 = (u >> 12) & wm, x1 = (x0 + 1u) & wm;
-            uint32_t y0 = ((v >> 12) << rp->s) & rm, y1 = (y0 + stride) & rm;
+            uint32_t fx = (u >> ZL_TEX_SHIFT) & 255u, fy = (v >> ZL_TEX_SHIFT) & 255u, gx = 256u - fx;
+            uint32_t x0 = (u >> ZL_TEX_FRAC) & wm, x1 = (x0 + 1u) & wm;
+            uint32_t y0 = ((v >> ZL_TEX_FRAC) << rp->s) & rm, y1 = (y0 + stride) & rm;
             uint32_t t00 = tx[y0 + x0], t10 = tx[y0 + x1], t01 = tx[y1 + x0], t11 = tx[y1 + x1];
             uint32_t top = widen_rb(t00) * gx + widen_rb(t10) * fx;
             uint32_t bottom = widen_rb(t01) * gx + widen_rb(t11) * fx;

@@ -30,18 +30,19 @@ static inline int depth_exact(uint32_t z, uint32_t dz, int32_t n)
     return z < (65536u << 14) && end >= 0 && end < ((int64_t)65536 << 14);
 }
 
-/* The texel of affine Q12 coordinates (u, v) on a texture that repeats on
- * both axes, power-of-two width, height and stride (stride 2^s): the
- * texel_index values ((v >> 12) & (h - 1)) * stride + ((u >> 12) & (w - 1))
- * as two masks, an add and a shift, from u and from v' = v << s (both
- * stepped as 32-bit words): the masks take bits 12.. of u, which are
- * floor(u / 4096) modulo 2^20 (two's complement; wrapping adds keep them),
- * and bits 12 + s.. of v', the same bits of v moved to the row's offset.
- * The two fields do not overlap (stride >= width), so the add carries
- * nothing; (h - 1) << s << 12 must fit 32 bits. */
+/* The texel of affine coordinates (u, v) of ZL_TEX_FRAC (F) fraction bits
+ * on a texture that repeats on both axes, power-of-two width, height and
+ * stride (stride 2^s): the texel_index values
+ * ((v >> F) & (h - 1)) * stride + ((u >> F) & (w - 1)) as two masks, an
+ * add and a shift, from u and from v' = v << s (both stepped as 32-bit
+ * words): the masks take bits F.. of u, which are floor(u / 2^F) modulo
+ * 2^(32 - F) (two's complement; wrapping adds keep them), and bits F + s..
+ * of v', the same bits of v moved to the row's offset. The two fields do
+ * not overlap (stride >= width), so the add carries nothing;
+ * (h - 1) << s << F must fit 32 bits. */
 typedef struct {
     const uint16_t *texels;
-    uint32_t umask, vmask; /* (w - 1) << 12; (h - 1) << (s + 12) */
+    uint32_t umask, vmask; /* (w - 1) << F; (h - 1) << (s + F) */
     unsigned s;
 } zl_repeat_pow2;
 
@@ -53,11 +54,11 @@ static inline int repeat_pow2_of(const zl_texture *tex, zl_repeat_pow2 *rp)
         return 0;
     while ((1u << s) < tex->stride)
         s++;
-    if (((uint32_t)(tex->height - 1u) << s) >= (UINT32_C(1) << 20))
+    if (((uint32_t)(tex->height - 1u) << s) >= (UINT32_C(1) << (32 - ZL_TEX_FRAC)))
         return 0;
     rp->texels = tex->texels;
-    rp->umask = (uint32_t)(tex->width - 1u) << 12;
-    rp->vmask = (uint32_t)(tex->height - 1u) << (s + 12u);
+    rp->umask = (uint32_t)(tex->width - 1u) << ZL_TEX_FRAC;
+    rp->vmask = (uint32_t)(tex->height - 1u) << (s + ZL_TEX_FRAC);
     rp->s = s;
     return 1;
 }
@@ -65,13 +66,14 @@ static inline int repeat_pow2_of(const zl_texture *tex, zl_repeat_pow2 *rp)
 static ZL_ALWAYS_INLINE uint16_t texel_repeat(const uint16_t *texels, uint32_t umask, uint32_t vmask, uint32_t u,
                                               uint32_t v)
 {
-    return texels[((u & umask) + (v & vmask)) >> 12];
+    return texels[((u & umask) + (v & vmask)) >> ZL_TEX_FRAC];
 }
 
-/* texel_index for an affine Q12 coordinate of 32 bits (power-of-two size). */
-static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c12, uint16_t size, unsigned wrap)
+/* texel_index for an affine coordinate of 32 bits (ZL_TEX_FRAC fraction
+ * bits; power-of-two size). */
+static ZL_ALWAYS_INLINE uint32_t texel_wrap32(int32_t c, uint16_t size, unsigned wrap)
 {
-    int32_t i = zl_floor_shift32(c12, 12);
+    int32_t i = zl_floor_shift32(c, ZL_TEX_FRAC);
     if (wrap == ZL_WRAP_CLAMP)
         return (uint32_t)(i < 0 ? 0 : (i >= size ? size - 1 : i));
     return (uint32_t)i & (uint32_t)(size - 1u);
