@@ -30,6 +30,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT INT TERM
 
 "$obj2c" --normalize --no-colors --name torus "$top/port/avr/torus.obj" "$work/torus_mesh.c" "$work/torus_mesh.h"
+# The mesh's arrays in flash (PROGMEM), read through zline's mesh read hook
+# (zl_avr_flash.h); the zl_mesh that points at them stays in SRAM.
+sed -e '1i #include <avr/pgmspace.h>' \
+    -e 's/^\(const [a-z0-9_]* torus_[a-z]*\[[^]]*\]\) = {$/\1 PROGMEM = {/' \
+    "$work/torus_mesh.c" >"$work/torus_flash.c"
+[ "$(grep -c ' PROGMEM = {$' "$work/torus_flash.c")" -eq 2 ] ||
+    { echo "$name: torus_mesh.c's positions and indices not found to place in flash"; exit 1; }
 # As the Arduino core compiles a sketch: -Os, LTO, section garbage
 # collection; SCENE_QEMU_DATA_PRELOAD: avr_board.h's QEMU 7.2 work-arounds.
 # The minimal configuration (zl_config.h's feature switches, issue 23): flat
@@ -37,9 +44,10 @@ trap 'rm -rf "$work"' EXIT INT TERM
 # vertices): what the scene draws, which uses the default depth mapping.
 avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w \
     -DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0 \
+    -DZL_CONFIG_HEADER='"zl_avr_flash.h"' \
     -ffunction-sections -fdata-sections -flto \
     -I"$top/core/include" -I"$top/port/avr" -I"$work" \
-    "$top/port/avr/avr_model.c" "$top/port/avr/model_scene.c" "$work/torus_mesh.c" \
+    "$top/port/avr/avr_model.c" "$top/port/avr/model_scene.c" "$work/torus_flash.c" \
     $(find "$top/core/src" -name '*.c' | sort) \
     -Wl,--gc-sections -o "$work/fw.elf"
 set -- $(avr-size "$work/fw.elf" | awk 'NR == 2 { print $1, $2, $3 }')
