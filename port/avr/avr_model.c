@@ -3,7 +3,7 @@
  * ATmega2560 firmware of the 8 KB demo (issue 23): renders the torus of
  * model_scene.c at 160x128 in scanline mode and streams every finished row
  * over USART0 as hex, the lines model_reference.c prints on the host:
- *   "# ..." lines (work buffer, stack high-water mark), then per frame
+ *   "# ..." lines (work buffer, replans, stack high-water mark), then per frame
  *   "frame N" and its 128 rows of 320 hex digits, then "done".
  * Each frame is rendered twice: once between two calls of mark() with rows
  * that go nowhere (the instructions of the frame alone, counted by the
@@ -53,7 +53,7 @@ static void report_error(int r)
 int main(void)
 {
     static uint64_t work[MODEL_SCENE_WORK_WORDS] MODEL_SCENE_ALIGN8;
-    uint16_t i;
+    uint16_t i, replans = 0;
     zl_frame_config cfg;
     stack_paint();
     usart_init();
@@ -65,10 +65,12 @@ int main(void)
     usart_put('\n');
     for (i = 0; i < MODEL_SCENE_CHECK_FRAMES; i++) {
         uint16_t index = (uint16_t)(i * MODEL_SCENE_CHECK_STEP);
+        zl_frame_needs_t needs;
         int r;
         mark();
-        r = model_scene_render(index, NULL, work, sizeof work, row_nowhere, NULL, NULL);
+        r = model_scene_render(index, NULL, work, sizeof work, row_nowhere, NULL, &needs);
         mark();
+        replans = (uint16_t)(replans + needs.replans); /* over capacity (model_scene.h) */
         if (r != 0)
             report_error(r);
         usart_puts("frame ");
@@ -78,6 +80,9 @@ int main(void)
         if (r != 0)
             report_error(r);
     }
+    usart_puts("# replans: ");
+    usart_dec(replans);
+    usart_put('\n');
     usart_puts("# stack: ");
     usart_dec(stack_used());
     usart_puts(" bytes at most\n");

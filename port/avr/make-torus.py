@@ -9,7 +9,8 @@ the rest of the tree.
 """
 import math
 
-MAJOR, MINOR = 10, 6
+import sys
+MAJOR, MINOR = (int(a) for a in sys.argv[1:3]) if len(sys.argv) > 2 else (15, 10)
 R, r = 1.0, 0.42
 
 

@@ -1,11 +1,13 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # avr_model_mega2560 (issue 23): 3D in the 8 KB of an ATmega2560. The torus
-# of model_scene.c (torus.obj through zline-obj2c), 160x128, scanline mode,
-# on qemu-system-avr -M mega2560; every row of 8 frames streamed over USART0
-# must equal the host's rendering of the same frames (model_reference.c)
-# byte for byte, and all the firmware's RAM (.data, .bss with zline's work
-# buffer, and the stack's high-water mark) must fit the chip's 8192 bytes.
+# of model_scene.c (torus.obj through zline-obj2c, its arrays in flash),
+# 160x128, scanline mode, over capacity, on qemu-system-avr -M mega2560;
+# every row of 8 frames streamed over USART0 must equal the host's rendering
+# of the same frames (model_reference.c, within capacity) byte for byte, the
+# firmware must replan as often as the host counts for its capacities, and
+# all the firmware's RAM (.data, .bss with zline's work buffer, and the
+# stack's high-water mark) must fit the chip's 8192 bytes.
 # Prints the flash, the RAM map and, when the QEMU plugin can be built
 # (tools/qemu-m4-timing: its instruction counts hold for any CPU), the AVR
 # instructions per frame.
@@ -80,6 +82,14 @@ if ! cmp -s "$work/avr.txt" "$work/host.txt"; then
     status=1
 else
     echo "$name: $(grep -c '^frame' "$work/host.txt") frames of 160x128 equal the host's, byte for byte (after $waited s)"
+fi
+# The firmware renders over capacity (model_scene.h): as many replans as
+# the host counts for the same frames with the same capacities.
+replans=$(sed -n 's/^# replans: \([0-9]*\)$/\1/p' "$work/serial.txt")
+expected=$("$reference" --needs | sed -n 's/.*; \([0-9]*\) in the [0-9]* frames the test compares$/\1/p')
+if [ -z "$replans" ] || [ "$replans" != "$expected" ]; then
+    echo "$name: the ATmega2560 replanned ${replans:-?} times, the host ${expected:-?} times"
+    status=1
 fi
 total=$((data + bss + stack))
 echo "$name: RAM used $total B of 8192 (.data $data + .bss $bss + stack $stack)"
