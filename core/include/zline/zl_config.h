@@ -179,16 +179,21 @@
  * pgm_read_dword, _word and _byte (port/avr/zl_avr_flash.h, named by
  * ZL_CONFIG_HEADER). Define all three or none. With them defined, every
  * mesh given to the covered calls must be where they read:
- *   covered      zl_frame_add_mesh, zl_frame_add_mesh_styled and the bands
- *                of zl_frame_render / zl_frame_next_band (scanline and band
- *                mode, over capacity too), zl_draw_mesh;
- *   not covered  zl_vis_*, zl_frame_bound and the other sizing calls,
- *                zl_mesh_sort, zl_face_light, zl_smooth_light,
- *                zl_mesh_edges, zl_triangle_facing: they read the arrays
- *                directly, so do not call them in such a build;
+ *   covered      zl_frame_add_mesh, zl_frame_add_mesh_styled,
+ *                zl_frame_add_mesh_camera and the bands of zl_frame_render /
+ *                zl_frame_next_band (scanline and band mode, over capacity
+ *                too); zl_draw_mesh and zl_draw_mesh_camera (CTest
+ *                mesh_read_hook checks these with a hook that decodes
+ *                scrambled meshes);
+ *   not covered  the calls of zl_visibility.h, zl_sizing.h and
+ *                zl_face_light.h, and zl_mesh_edges: they read the arrays
+ *                directly, so do not call them in such a build; nor the
+ *                arrays of zl_style (texture coordinates) and textures;
  *   compiled out lines and outlines share the vertex stage's reads with
  *                their own arrays, so a build that defines the hook must set
  *                ZL_FEATURE_LINES and ZL_FEATURE_OUTLINES to 0 (#error).
+ * Only the library's sources expand it: what matters is how the library
+ * was built, and the application keeps its meshes where that build reads.
  */
 #if defined(ZL_MESH_READ_FIXED) || defined(ZL_MESH_READ_U16) || defined(ZL_MESH_READ_U8)
 #if !defined(ZL_MESH_READ_FIXED) || !defined(ZL_MESH_READ_U16) || !defined(ZL_MESH_READ_U8)
