@@ -57,6 +57,8 @@ text=$1 data=$2 bss=$3
 echo "$name: flash $((text + data)) B; RAM before the stack $((data + bss)) B (.data $data + .bss $bss)"
 avr-nm -S --size-sort "$work/fw.elf" | awk -v n="$name" '
     $3 ~ /^[dDbB]$/ && ("0x" $2) + 0 >= 64 { printf "%s:   %6d B  %s\n", n, ("0x" $2) + 0, $4 }'
+avr-nm -S "$work/fw.elf" | awk -v n="$name" '
+    $4 ~ /^torus_(positions|indices)$/ { printf "%s:   %6d B  %s (in flash)\n", n, ("0x" $2) + 0, $4 }'
 mark=0x$(avr-nm "$work/fw.elf" | awk '$3 == "mark" { print $1 }')
 
 plugin=
