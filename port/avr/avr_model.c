@@ -31,13 +31,13 @@ static int row_nowhere(void *user, const zl_band *band)
 
 static int row_to_usart(void *user, const zl_band *band)
 {
-    static const char digits[] = "0123456789abcdef";
+    static const char digits[] PROGMEM = "0123456789abcdef";
     const uint8_t *bytes = (const uint8_t *)band->color;
     uint16_t i, count = (uint16_t)(band->width * 2u * band->rows);
     (void)user;
     for (i = 0; i < count; i++) {
-        usart_put(digits[bytes[i] >> 4]);
-        usart_put(digits[bytes[i] & 15u]);
+        usart_put((char)pgm_read_byte(&digits[bytes[i] >> 4]));
+        usart_put((char)pgm_read_byte(&digits[bytes[i] & 15u]));
     }
     usart_put('\n');
     return 0;
@@ -45,7 +45,7 @@ static int row_to_usart(void *user, const zl_band *band)
 
 static void report_error(int r)
 {
-    usart_puts("render error ");
+    usart_puts_P(PSTR("render error "));
     usart_dec((uint16_t)-r);
     usart_put('\n');
 }
@@ -58,9 +58,9 @@ int main(void)
     stack_paint();
     usart_init();
     model_scene_config(&cfg);
-    usart_puts("# work buffer: ");
+    usart_puts_P(PSTR("# work buffer: "));
     usart_dec((uint16_t)zl_frame_bytes(&cfg));
-    usart_puts(" bytes needed of ");
+    usart_puts_P(PSTR(" bytes needed of "));
     usart_dec((uint16_t)sizeof work);
     usart_put('\n');
     for (i = 0; i < MODEL_SCENE_CHECK_FRAMES; i++) {
@@ -73,20 +73,20 @@ int main(void)
         replans = (uint16_t)(replans + needs.replans); /* over capacity (model_scene.h) */
         if (r != 0)
             report_error(r);
-        usart_puts("frame ");
+        usart_puts_P(PSTR("frame "));
         usart_dec(index);
         usart_put('\n');
         r = model_scene_render(index, NULL, work, sizeof work, row_to_usart, NULL, NULL);
         if (r != 0)
             report_error(r);
     }
-    usart_puts("# replans: ");
+    usart_puts_P(PSTR("# replans: "));
     usart_dec(replans);
     usart_put('\n');
-    usart_puts("# stack: ");
+    usart_puts_P(PSTR("# stack: "));
     usart_dec(stack_used());
-    usart_puts(" bytes at most\n");
-    usart_puts("done\n");
+    usart_puts_P(PSTR(" bytes at most\n"));
+    usart_puts_P(PSTR("done\n"));
     board_halt();
     return 0;
 }

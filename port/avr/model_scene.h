@@ -37,16 +37,16 @@
  * MODEL_SCENE_MOST_REPLANS in one frame: a change of scene or of zline that
  * moves them must update them and README.md's figures.
  */
-#define MODEL_SCENE_MAX_ACTIVE 32u
+#define MODEL_SCENE_MAX_ACTIVE 33u
 #define MODEL_SCENE_MAX_TRIANGLES 150u
 #define MODEL_SCENE_NEEDS_ACTIVE 40u
-#define MODEL_SCENE_REPLANS 253u
-#define MODEL_SCENE_MOST_REPLANS 27u
+#define MODEL_SCENE_REPLANS 198u
+#define MODEL_SCENE_MOST_REPLANS 22u
 
 /* zline's work buffer in 8-byte words: at least zl_frame_bytes() of
  * model_scene_config (checked at render time: ZL_ERR_ARG if not). The
  * AVR's pointers are 2 bytes, so it needs less there than on the host. */
-#define MODEL_SCENE_WORK_WORDS 795u
+#define MODEL_SCENE_WORK_WORDS 810u
 #if defined(__GNUC__)
 #define MODEL_SCENE_ALIGN8 __attribute__((aligned(8)))
 #else
