@@ -11,6 +11,7 @@
 
 #include <avr/interrupt.h>
 #include <avr/io.h>
+#include <avr/pgmspace.h>
 #include <avr/sleep.h>
 #include <stdint.h>
 
@@ -73,6 +74,14 @@ static void usart_puts(const char *s)
 {
     while (*s)
         usart_put(*s++);
+}
+
+/* A string kept in flash (PSTR("...")): string literals would take SRAM. */
+static void usart_puts_P(const char *s)
+{
+    char c;
+    while ((c = (char)pgm_read_byte(s++)) != 0)
+        usart_put(c);
 }
 
 static void usart_hex32(uint32_t v)

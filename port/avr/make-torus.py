@@ -1,15 +1,18 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Writes torus.obj, the ATmega2560 demo's low-poly model (port/avr): a torus
-of major radius 1 and minor radius 0.42 in 10 x 6 quads, 60 vertices and 120
-triangles, counter-clockwise seen from outside. Our own geometry, MIT like
-the rest of the tree.
+of major radius 1 and minor radius 0.42 in 15 x 10 quads, 150 vertices and
+300 triangles, counter-clockwise seen from outside. Our own geometry, MIT
+like the rest of the tree. Two arguments give other sizes (quads around the
+ring, quads around the tube).
 
     python3 port/avr/make-torus.py > port/avr/torus.obj
+    python3 port/avr/make-torus.py 10 6     (the 120-triangle torus of before)
 """
 import math
+import sys
 
-MAJOR, MINOR = 10, 6
+MAJOR, MINOR = (int(a) for a in sys.argv[1:3]) if len(sys.argv) > 2 else (15, 10)
 R, r = 1.0, 0.42
 
 

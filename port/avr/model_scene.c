@@ -14,9 +14,16 @@ void model_scene_config(zl_frame_config *cfg)
     c.color_buffers = 1;
     c.max_meshes = 1;
     c.max_vertices = TORUS_VERTEX_COUNT;
-    c.max_triangles = TORUS_TRIANGLE_COUNT;
+    c.max_triangles = MODEL_SCENE_MAX_TRIANGLES;
     c.max_active = MODEL_SCENE_MAX_ACTIVE;
     *cfg = c;
+}
+
+void model_scene_roomy_config(zl_frame_config *cfg)
+{
+    model_scene_config(cfg);
+    cfg->max_triangles = TORUS_TRIANGLE_COUNT;
+    cfg->max_active = TORUS_TRIANGLE_COUNT;
 }
 
 /* The torus turns 7.5 degrees a frame about y and half that about x; the
@@ -79,16 +86,21 @@ static zl_status scene_setup(zl_mat4 *mvp, zl_state *st, uint16_t step)
     return ZL_OK;
 }
 
-int model_scene_render(uint16_t index, const zl_frame_config *cfg, uint64_t *work, size_t work_bytes,
-                       zl_band_fn row_fn, void *user, zl_frame_needs_t *needs)
+/* Begin frame `index` in work and submit the torus. Out of line: its
+ * matrix, state and configuration (about 150 bytes on the AVR) are copied
+ * into the work buffer by zl_frame_add_mesh, so they leave the stack before
+ * the rows render. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static zl_status scene_begin(zl_frame *frame, uint16_t index, const zl_frame_config *cfg, uint64_t *work,
+                             size_t work_bytes)
 {
     static const zl_rgb background = {10, 20, 40};
     zl_frame_config c;
-    zl_frame frame;
     zl_mat4 mvp;
     zl_state st;
     zl_status s;
-    int r;
     if (cfg != NULL)
         c = *cfg;
     else
@@ -96,11 +108,19 @@ int model_scene_render(uint16_t index, const zl_frame_config *cfg, uint64_t *wor
     if (zl_frame_bytes(&c) > work_bytes)
         return ZL_ERR_ARG;
     s = scene_setup(&mvp, &st, (uint16_t)(index % MODEL_SCENE_FRAMES));
-    if (s != ZL_OK)
-        return s;
-    s = zl_frame_begin(&frame, &c, work, work_bytes, background, 65535);
     if (s == ZL_OK)
-        s = zl_frame_add_mesh(&frame, &torus_mesh, &mvp, &st);
+        s = zl_frame_begin(frame, &c, work, work_bytes, background, 65535);
+    if (s == ZL_OK)
+        s = zl_frame_add_mesh(frame, &torus_mesh, &mvp, &st);
+    return s;
+}
+
+int model_scene_render(uint16_t index, const zl_frame_config *cfg, uint64_t *work, size_t work_bytes,
+                       zl_band_fn row_fn, void *user, zl_frame_needs_t *needs)
+{
+    zl_frame frame;
+    int r;
+    zl_status s = scene_begin(&frame, index, cfg, work, work_bytes);
     if (s != ZL_OK)
         return s;
     r = zl_frame_render(&frame, row_fn, user);

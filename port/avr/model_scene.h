@@ -24,22 +24,39 @@
  * turn: the hole seen edge-on, from above, from below). */
 #define MODEL_SCENE_CHECK_FRAMES 8u
 #define MODEL_SCENE_CHECK_STEP 6u
-/* Active triangle records: the most any row of any frame of the turn needs
- * (model_reference --needs prints it over all 48 frames) plus a margin; a
- * frame that needed more would stop with ZL_ERR_CAPACITY, never overflow. */
-#define MODEL_SCENE_MAX_ACTIVE 26u
+/*
+ * Capacities (issue 23): the firmware's work buffer holds fewer active
+ * triangle records than the busiest rows need, and zline renders those
+ * frames over capacity (zline.h, Sizing): rows planned again a window at a
+ * time and rendered in passes, byte-identical, slower. model_reference
+ * --needs (CTest avr_model_capacity) renders the 48 frames of the turn with
+ * room for everything and with these capacities, and fails unless the turn
+ * needs exactly MODEL_SCENE_NEEDS_ACTIVE records at most, keeps at most
+ * MODEL_SCENE_MAX_TRIANGLES triangles (the front faces: no replan for
+ * those) and takes exactly MODEL_SCENE_REPLANS replans, at most
+ * MODEL_SCENE_MOST_REPLANS in one frame: a change of scene or of zline that
+ * moves them must update them and README.md's figures.
+ */
+#define MODEL_SCENE_MAX_ACTIVE 33u
+#define MODEL_SCENE_MAX_TRIANGLES 150u
+#define MODEL_SCENE_NEEDS_ACTIVE 40u
+#define MODEL_SCENE_REPLANS 198u
+#define MODEL_SCENE_MOST_REPLANS 22u
 
 /* zline's work buffer in 8-byte words: at least zl_frame_bytes() of
  * model_scene_config (checked at render time: ZL_ERR_ARG if not). The
  * AVR's pointers are 2 bytes, so it needs less there than on the host. */
-#define MODEL_SCENE_WORK_WORDS 610u
+#define MODEL_SCENE_WORK_WORDS 810u
 #if defined(__GNUC__)
 #define MODEL_SCENE_ALIGN8 __attribute__((aligned(8)))
 #else
 #define MODEL_SCENE_ALIGN8
 #endif
 
+/* The firmware's configuration, and the host's with room for every
+ * triangle of the torus at once (no replans). */
 void model_scene_config(zl_frame_config *cfg);
+void model_scene_roomy_config(zl_frame_config *cfg);
 
 /* Render frame `index` (wraps every MODEL_SCENE_FRAMES) with configuration
  * cfg (NULL: model_scene_config's), calling row_fn for each finished row;

@@ -1,11 +1,13 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # avr_model_mega2560 (issue 23): 3D in the 8 KB of an ATmega2560. The torus
-# of model_scene.c (torus.obj through zline-obj2c), 160x128, scanline mode,
-# on qemu-system-avr -M mega2560; every row of 8 frames streamed over USART0
-# must equal the host's rendering of the same frames (model_reference.c)
-# byte for byte, and all the firmware's RAM (.data, .bss with zline's work
-# buffer, and the stack's high-water mark) must fit the chip's 8192 bytes.
+# of model_scene.c (torus.obj through zline-obj2c, its arrays in flash),
+# 160x128, scanline mode, over capacity, on qemu-system-avr -M mega2560;
+# every row of 8 frames streamed over USART0 must equal the host's rendering
+# of the same frames (model_reference.c, within capacity) byte for byte, the
+# firmware must replan as often as the host counts for its capacities, and
+# all the firmware's RAM (.data, .bss with zline's work buffer, and the
+# stack's high-water mark) must fit the chip's 8192 bytes.
 # Prints the flash, the RAM map and, when the QEMU plugin can be built
 # (tools/qemu-m4-timing: its instruction counts hold for any CPU), the AVR
 # instructions per frame.
@@ -30,6 +32,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT INT TERM
 
 "$obj2c" --normalize --no-colors --name torus "$top/port/avr/torus.obj" "$work/torus_mesh.c" "$work/torus_mesh.h"
+# The mesh's arrays in flash (PROGMEM), read through zline's mesh read hook
+# (zl_avr_flash.h); the zl_mesh that points at them stays in SRAM.
+sed -e '1i #include <avr/pgmspace.h>' \
+    -e 's/^\(const [a-z0-9_]* torus_[a-z]*\[[^]]*\]\) = {$/\1 PROGMEM = {/' \
+    "$work/torus_mesh.c" >"$work/torus_flash.c"
+[ "$(grep -c ' PROGMEM = {$' "$work/torus_flash.c")" -eq 2 ] ||
+    { echo "$name: torus_mesh.c's positions and indices not found to place in flash"; exit 1; }
 # As the Arduino core compiles a sketch: -Os, LTO, section garbage
 # collection; SCENE_QEMU_DATA_PRELOAD: avr_board.h's QEMU 7.2 work-arounds.
 # The minimal configuration (zl_config.h's feature switches, issue 23): flat
@@ -37,9 +46,10 @@ trap 'rm -rf "$work"' EXIT INT TERM
 # vertices): what the scene draws, which uses the default depth mapping.
 avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w \
     -DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0 \
+    -DZL_CONFIG_HEADER='"zl_avr_flash.h"' \
     -ffunction-sections -fdata-sections -flto \
     -I"$top/core/include" -I"$top/port/avr" -I"$work" \
-    "$top/port/avr/avr_model.c" "$top/port/avr/model_scene.c" "$work/torus_mesh.c" \
+    "$top/port/avr/avr_model.c" "$top/port/avr/model_scene.c" "$work/torus_flash.c" \
     $(find "$top/core/src" -name '*.c' | sort) \
     -Wl,--gc-sections -o "$work/fw.elf"
 set -- $(avr-size "$work/fw.elf" | awk 'NR == 2 { print $1, $2, $3 }')
@@ -47,6 +57,8 @@ text=$1 data=$2 bss=$3
 echo "$name: flash $((text + data)) B; RAM before the stack $((data + bss)) B (.data $data + .bss $bss)"
 avr-nm -S --size-sort "$work/fw.elf" | awk -v n="$name" '
     $3 ~ /^[dDbB]$/ && ("0x" $2) + 0 >= 64 { printf "%s:   %6d B  %s\n", n, ("0x" $2) + 0, $4 }'
+avr-nm -S "$work/fw.elf" | awk -v n="$name" '
+    $4 ~ /^torus_(positions|indices)$/ { printf "%s:   %6d B  %s (in flash)\n", n, ("0x" $2) + 0, $4 }'
 mark=0x$(avr-nm "$work/fw.elf" | awk '$3 == "mark" { print $1 }')
 
 plugin=
@@ -72,6 +84,14 @@ if ! cmp -s "$work/avr.txt" "$work/host.txt"; then
     status=1
 else
     echo "$name: $(grep -c '^frame' "$work/host.txt") frames of 160x128 equal the host's, byte for byte (after $waited s)"
+fi
+# The firmware renders over capacity (model_scene.h): as many replans as
+# the host counts for the same frames with the same capacities.
+replans=$(sed -n 's/^# replans: \([0-9]*\)$/\1/p' "$work/serial.txt")
+expected=$("$reference" --needs | sed -n 's/.*; \([0-9]*\) in the [0-9]* frames the test compares$/\1/p')
+if [ -z "$replans" ] || [ "$replans" != "$expected" ]; then
+    echo "$name: the ATmega2560 replanned ${replans:-?} times, the host ${expected:-?} times"
+    status=1
 fi
 total=$((data + bss + stack))
 echo "$name: RAM used $total B of 8192 (.data $data + .bss $bss + stack $stack)"

@@ -169,6 +169,46 @@
      ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4))
 
 /*
+ * ZL_MESH_READ_FIXED(p), ZL_MESH_READ_U16(p), ZL_MESH_READ_U8(p): how the
+ * triangle pipeline reads one element of a zl_mesh's arrays; p is a
+ * const zl_fixed * into positions, a const uint16_t * into indices, a
+ * const uint8_t * into vertex_colors or face_colors. Default: a plain read,
+ * *(p), the same object code as before the hook (issue 23). For a target
+ * whose data pointers cannot reach where its meshes are kept: the 8 KB
+ * ATmega2560 keeps its mesh in flash (PROGMEM) and reads it with
+ * pgm_read_dword, _word and _byte (port/avr/zl_avr_flash.h, named by
+ * ZL_CONFIG_HEADER). Define all three or none. With them defined, every
+ * mesh given to the covered calls must be where they read:
+ *   covered      zl_frame_add_mesh, zl_frame_add_mesh_styled,
+ *                zl_frame_add_mesh_camera and the bands of zl_frame_render /
+ *                zl_frame_next_band (scanline and band mode, over capacity
+ *                too); zl_draw_mesh and zl_draw_mesh_camera (CTest
+ *                mesh_read_hook checks these with a hook that decodes
+ *                scrambled meshes);
+ *   not covered  the calls of zl_visibility.h, zl_sizing.h and
+ *                zl_face_light.h, and zl_mesh_edges: they read the arrays
+ *                directly, so do not call them in such a build; nor the
+ *                arrays of zl_style (texture coordinates) and textures;
+ *   compiled out lines and outlines share the vertex stage's reads with
+ *                their own arrays, so a build that defines the hook must set
+ *                ZL_FEATURE_LINES and ZL_FEATURE_OUTLINES to 0 (#error).
+ * Only the library's sources expand it: what matters is how the library
+ * was built, and the application keeps its meshes where that build reads.
+ */
+#if defined(ZL_MESH_READ_FIXED) || defined(ZL_MESH_READ_U16) || defined(ZL_MESH_READ_U8)
+#if !defined(ZL_MESH_READ_FIXED) || !defined(ZL_MESH_READ_U16) || !defined(ZL_MESH_READ_U8)
+#error "define all three of ZL_MESH_READ_FIXED, ZL_MESH_READ_U16 and ZL_MESH_READ_U8, or none"
+#endif
+#if ZL_FEATURE_LINES || ZL_FEATURE_OUTLINES
+#error "ZL_MESH_READ_* needs ZL_FEATURE_LINES 0 and ZL_FEATURE_OUTLINES 0"
+#endif
+#else
+#define ZL_MESH_READ_FIXED(p) (*(p))
+#define ZL_MESH_READ_U16(p) (*(p))
+#define ZL_MESH_READ_U8(p) (*(p))
+#endif
+
+/*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library
  * validates every argument itself and returns an error); define it to your
  * platform's assert to catch bugs in zline during development.

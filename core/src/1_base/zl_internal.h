@@ -32,6 +32,12 @@
 #define ZL_PERSP_SHIFT 24
 #define ZL_GRAD_LIMIT ((int64_t)1 << 43)     /* clamp of a per-pixel attribute gradient */
 
+/* Element i of a caller mesh array (positions, indices, vertex or face
+ * colours), through zl_config.h's read hook: a plain p[i] by default. */
+#define ZL_MESH_POS(p, i) ZL_MESH_READ_FIXED(&(p)[i])
+#define ZL_MESH_IDX(p, i) ZL_MESH_READ_U16(&(p)[i])
+#define ZL_MESH_U8(p, i) ZL_MESH_READ_U8(&(p)[i])
+
 /* Window-space vertex, after projection and snapping. */
 typedef struct {
     int32_t x, y;       /* subpixels */

@@ -69,7 +69,8 @@ zl_status zl_check_mesh(const zl_mesh *m, int pixel_space)
     n = (uint32_t)m->triangle_count * 3u;
     for (i = 0; i < n; i += 3) {
         const int32_t top = (int32_t)m->vertex_count - 1;
-        bad |= (top - m->indices[i]) | (top - m->indices[i + 1]) | (top - m->indices[i + 2]);
+        bad |= (top - ZL_MESH_IDX(m->indices, i)) | (top - ZL_MESH_IDX(m->indices, i + 1)) |
+               (top - ZL_MESH_IDX(m->indices, i + 2));
     }
     return bad < 0 ? ZL_ERR_RANGE : ZL_OK;
 }

@@ -77,16 +77,16 @@ static int polygon_from_cache(const zl_source *s, const uint16_t *idx, zl_poly *
 {
     unsigned k;
     for (k = 0; k < 3; k++) {
-        const zl_cached_vertex *c = &s->cache[idx[k]];
+        const zl_cached_vertex *c = &s->cache[ZL_MESH_IDX(idx, k)];
         zl_wvert *w = &out->v[k];
         w->x = c->x;
         w->y = c->y;
         w->z = c->z;
         out->fx[k] = ZL_CV_FX(c);
         out->fy[k] = ZL_CV_FY(c);
-        w->r = (uint16_t)color_q8(s->mesh, idx[k], 0);
-        w->g = (uint16_t)color_q8(s->mesh, idx[k], 1);
-        w->b = (uint16_t)color_q8(s->mesh, idx[k], 2);
+        w->r = (uint16_t)color_q8(s->mesh, ZL_MESH_IDX(idx, k), 0);
+        w->g = (uint16_t)color_q8(s->mesh, ZL_MESH_IDX(idx, k), 1);
+        w->b = (uint16_t)color_q8(s->mesh, ZL_MESH_IDX(idx, k), 2);
     }
     out->n = 3;
     out->clipped = 0;
@@ -100,7 +100,7 @@ static int polygon_clipped(const zl_source *s, const uint16_t *idx, zl_poly *out
     unsigned all_out = 0x7Fu, any_out = 0, plane, n = 3, k;
     for (k = 0; k < 3; k++) { /* the outcodes folded as they come: no array on this deep frame */
         unsigned code;
-        if (!zl_vertex_clip(s, idx[k], &a[k]))
+        if (!zl_vertex_clip(s, ZL_MESH_IDX(idx, k), &a[k]))
             return 0;
         code = zl_outcode(s, &a[k]);
         all_out &= code;
@@ -137,7 +137,7 @@ static ZL_NOINLINE void poly_residuals(const zl_source *s, const uint16_t *idx, 
 {
     unsigned k;
     for (k = 0; k < 3; k++)
-        zl_vertex_residuals(s, idx[k], &out->v[k], &out->fx[k], &out->fy[k]);
+        zl_vertex_residuals(s, ZL_MESH_IDX(idx, k), &out->v[k], &out->fx[k], &out->fy[k]);
 }
 
 int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_poly *out)
@@ -146,7 +146,8 @@ int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_
     int ok;
     (void)sty;
     if (s->cache != NULL) {
-        int16_t x0 = s->cache[idx[0]].x, x1 = s->cache[idx[1]].x, x2 = s->cache[idx[2]].x;
+        int16_t x0 = s->cache[ZL_MESH_IDX(idx, 0)].x, x1 = s->cache[ZL_MESH_IDX(idx, 1)].x,
+                x2 = s->cache[ZL_MESH_IDX(idx, 2)].x;
         if (x0 == ZL_CACHE_INVALID || x1 == ZL_CACHE_INVALID || x2 == ZL_CACHE_INVALID)
             return 0;
         if (x0 != ZL_CACHE_COMPLEX && x1 != ZL_CACHE_COMPLEX && x2 != ZL_CACHE_COMPLEX)
@@ -203,9 +204,9 @@ static ZL_NOINLINE int tex_clipped(const zl_source *s, const zl_style *sty, cons
     tcvert *src = a, *dst = b, *tmp;
     unsigned codes[3], any_out, plane, n = 3, k;
     for (k = 0; k < 3; k++) {
-        if (!zl_vertex_clip(s, idx[k], &a[k].c))
+        if (!zl_vertex_clip(s, ZL_MESH_IDX(idx, k), &a[k].c))
             return 0;
-        tex_coords(sty, idx[k], &a[k].u, &a[k].v);
+        tex_coords(sty, ZL_MESH_IDX(idx, k), &a[k].u, &a[k].v);
         codes[k] = zl_outcode(s, &a[k].c);
     }
     any_out = codes[0] | codes[1] | codes[2];
@@ -239,9 +240,9 @@ static ZL_NOINLINE int tex_vertices(const zl_source *s, const zl_style *sty, con
     unsigned k, any_out = 0;
     for (k = 0; k < 3; k++) {
         zl_cvert c;
-        if (!zl_vertex_clip(s, idx[k], &c))
+        if (!zl_vertex_clip(s, ZL_MESH_IDX(idx, k), &c))
             return -1;
-        tex_coords(sty, idx[k], &out->u[k], &out->v[k]);
+        tex_coords(sty, ZL_MESH_IDX(idx, k), &out->u[k], &out->v[k]);
         out->w[k] = w_of(s, c.w);
         any_out |= zl_outcode(s, &c);
     }

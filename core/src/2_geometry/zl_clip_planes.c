@@ -326,7 +326,7 @@ static ZL_NOINLINE int solve_of(const zl_source *s, uint32_t t, int32_t ax, int3
     unsigned i, k;
     for (i = 0; i < 3; i++) {
         zl_cvert v;
-        if (!zl_vertex_clip(s, idx[i], &v))
+        if (!zl_vertex_clip(s, ZL_MESH_IDX(idx, i), &v))
             return 0;
         p[i][0] = v.x;
         p[i][1] = v.y;
@@ -499,7 +499,7 @@ int zl_tri_orig_texplanes(const zl_source *s, const zl_style *sty, uint32_t tri,
         for (ch = 0; ch < 2; ch++) { /* u, then v */
             for (i = 0; i < 3; i++) {
                 int32_t c[2];
-                tex_coords(sty, s->mesh->indices[tri * 3u + i], &c[0], &c[1]);
+                tex_coords(sty, ZL_MESH_IDX(s->mesh->indices, tri * 3u + i), &c[0], &c[1]);
                 a[i] = (int64_t)c[ch] * (persp ? wmin : w[i]);
             }
             attr_plane(ch == 0 ? &tp->u : &tp->v, &h, a, (int64_t)1 << ZL_TEX_SHIFT, 1);

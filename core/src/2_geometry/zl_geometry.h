@@ -25,7 +25,7 @@ enum {
 /* Vertex colour channel k in Q8 (0 without vertex colours). */
 ZL_SHARED_STATIC int32_t color_q8(const zl_mesh *m, uint16_t idx, int k)
 {
-    return m->vertex_colors ? (int32_t)m->vertex_colors[idx * 3u + (unsigned)k] * 256 : 0;
+    return m->vertex_colors ? (int32_t)ZL_MESH_U8(m->vertex_colors, idx * 3u + (unsigned)k) * 256 : 0;
 }
 
 /* Texture coordinate (Q16.16 of the size) in 1/256 texel, within +-2^23. */

@@ -69,22 +69,23 @@ static unsigned bit_length32(uint32_t v)
  * v + 2^30 below 2^31), the exact test otherwise (v = 2^30). */
 static ZL_ALWAYS_INLINE int in_limit3(const zl_fixed *p)
 {
-    if ((((uint32_t)p[0] + COORD_LIMIT) | ((uint32_t)p[1] + COORD_LIMIT) | ((uint32_t)p[2] + COORD_LIMIT)) <
-        2u * COORD_LIMIT)
+    if ((((uint32_t)ZL_MESH_POS(p, 0) + COORD_LIMIT) | ((uint32_t)ZL_MESH_POS(p, 1) + COORD_LIMIT) |
+         ((uint32_t)ZL_MESH_POS(p, 2) + COORD_LIMIT)) < 2u * COORD_LIMIT)
         return 1;
-    return in_limit(p[0]) && in_limit(p[1]) && in_limit(p[2]);
+    return in_limit(ZL_MESH_POS(p, 0)) && in_limit(ZL_MESH_POS(p, 1)) && in_limit(ZL_MESH_POS(p, 2));
 }
 
 /* The normal of any triangle, scaled below 2^14: edges brought below 2^30
  * so the 64-bit cross product cannot overflow, then the normal shifted. */
 static ZL_NOINLINE void large_normal(const zl_fixed *pos, const uint16_t *idx, int32_t *m)
 {
-    const zl_fixed *p0 = &pos[idx[0] * 3u], *p1 = &pos[idx[1] * 3u], *p2 = &pos[idx[2] * 3u];
+    const zl_fixed *p0 = &pos[ZL_MESH_IDX(idx, 0) * 3u], *p1 = &pos[ZL_MESH_IDX(idx, 1) * 3u],
+                   *p2 = &pos[ZL_MESH_IDX(idx, 2) * 3u];
     int64_t e[6], n[3];
     unsigned k, shift;
     for (k = 0; k < 3; k++) {
-        e[k] = (int64_t)p1[k] - p0[k];
-        e[k + 3] = (int64_t)p2[k] - p0[k];
+        e[k] = (int64_t)ZL_MESH_POS(p1, k) - ZL_MESH_POS(p0, k);
+        e[k + 3] = (int64_t)ZL_MESH_POS(p2, k) - ZL_MESH_POS(p0, k);
     }
     shift = shift_below(max_abs(e, 6), 30);
     for (k = 0; k < 6; k++)
@@ -114,11 +115,15 @@ static ZL_NOINLINE void large_normal(const zl_fixed *pos, const uint16_t *idx, i
 static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *idx, const int32_t *lq)
 {
     const zl_fixed *pos = s->mesh->positions;
-    const zl_fixed *p0 = &pos[idx[0] * 3u], *p1 = &pos[idx[1] * 3u], *p2 = &pos[idx[2] * 3u];
+    const zl_fixed *p0 = &pos[ZL_MESH_IDX(idx, 0) * 3u], *p1 = &pos[ZL_MESH_IDX(idx, 1) * 3u],
+                   *p2 = &pos[ZL_MESH_IDX(idx, 2) * 3u];
     const zl_state *st = s->state;
-    const uint32_t x0 = (uint32_t)p0[0], y0 = (uint32_t)p0[1], z0 = (uint32_t)p0[2], half = 1u << 14;
-    const uint32_t e0 = (uint32_t)p1[0] - x0, e1 = (uint32_t)p1[1] - y0, e2 = (uint32_t)p1[2] - z0;
-    const uint32_t e3 = (uint32_t)p2[0] - x0, e4 = (uint32_t)p2[1] - y0, e5 = (uint32_t)p2[2] - z0;
+    const uint32_t x0 = (uint32_t)ZL_MESH_POS(p0, 0), y0 = (uint32_t)ZL_MESH_POS(p0, 1),
+                   z0 = (uint32_t)ZL_MESH_POS(p0, 2), half = 1u << 14;
+    const uint32_t e0 = (uint32_t)ZL_MESH_POS(p1, 0) - x0, e1 = (uint32_t)ZL_MESH_POS(p1, 1) - y0,
+                   e2 = (uint32_t)ZL_MESH_POS(p1, 2) - z0;
+    const uint32_t e3 = (uint32_t)ZL_MESH_POS(p2, 0) - x0, e4 = (uint32_t)ZL_MESH_POS(p2, 1) - y0,
+                   e5 = (uint32_t)ZL_MESH_POS(p2, 2) - z0;
     int32_t m0, m1, m2, dot, cosv;
     uint32_t len;
     /* every edge in [-2^14, 2^14) iff each e + 2^14 is below 2^15 */
@@ -185,7 +190,7 @@ static ZL_ALWAYS_INLINE uint32_t rgb_bits(const zl_wvert *v)
 static ZL_ALWAYS_INLINE zl_rgb face_color(const zl_source *s, uint32_t t)
 {
     const uint8_t *fc = s->mesh->face_colors;
-    return fc ? (zl_rgb){fc[t * 3], fc[t * 3 + 1], fc[t * 3 + 2]} : s->state->color;
+    return fc ? (zl_rgb){ZL_MESH_U8(fc, t * 3), ZL_MESH_U8(fc, t * 3 + 1), ZL_MESH_U8(fc, t * 3 + 2)} : s->state->color;
 }
 
 /* Flat colour and lighting of source triangle t into poly. */

@@ -274,9 +274,9 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
     {
         uint32_t o[3] = {0, 0, 0};
         for (i = 0; i < n; i += 3) {
-            o[0] |= abs32(positions[i]);
-            o[1] |= abs32(positions[i + 1]);
-            o[2] |= abs32(positions[i + 2]);
+            o[0] |= abs32(ZL_MESH_POS(positions, i));
+            o[1] |= abs32(ZL_MESH_POS(positions, i + 1));
+            o[2] |= abs32(ZL_MESH_POS(positions, i + 2));
         }
         if ((o[0] | o[1] | o[2]) < (uint32_t)ZL_COORD_LIMIT) {
             for (k = 0; k < 3; k++)
@@ -286,7 +286,7 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
     }
     for (i = 0; i < n; i += 3) {
         for (k = 0; k < 3; k++) {
-            zl_fixed v = positions[i + (uint32_t)k];
+            zl_fixed v = ZL_MESH_POS(positions, i + (uint32_t)k);
             int64_t a = v < 0 ? -(int64_t)v : v;
             if (!in_coord_range(v))
                 return ZL_ERR_RANGE;
@@ -308,9 +308,9 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
     for (i = 0; exact && i < n; i += 3) {
         zl_vec3 v;
         zl_vec4 c;
-        v.x = positions[i];
-        v.y = positions[i + 1];
-        v.z = positions[i + 2];
+        v.x = ZL_MESH_POS(positions, i);
+        v.y = ZL_MESH_POS(positions, i + 1);
+        v.z = ZL_MESH_POS(positions, i + 2);
         if (zl_transform_point(mvp, v, &c) != ZL_OK)
             return ZL_ERR_RANGE;
     }

@@ -110,8 +110,8 @@ static uint32_t depth_of_wsum(const zl_state *st, int64_t dq)
 static ZL_NOINLINE uint32_t vertex_exact_depth(const zl_source *s, const zl_fixed *p)
 {
     const zl_fixed *m = &s->mvp->m[12];
-    return depth_of_wsum(s->state, (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2] +
-                                       (int64_t)m[3] * ZL_FX_ONE);
+    return depth_of_wsum(s->state, (int64_t)m[0] * ZL_MESH_POS(p, 0) + (int64_t)m[1] * ZL_MESH_POS(p, 1) +
+                                       (int64_t)m[2] * ZL_MESH_POS(p, 2) + (int64_t)m[3] * ZL_FX_ONE);
 }
 
 /* Row r of the transform of p, unrounded (2^-32 units; below 2^47 when
@@ -119,7 +119,8 @@ static ZL_NOINLINE uint32_t vertex_exact_depth(const zl_source *s, const zl_fixe
 static int64_t transform_sum(const zl_mat4 *m, int r, const zl_fixed *p)
 {
     const zl_fixed *row = &m->m[r * 4];
-    return (int64_t)row[0] * p[0] + (int64_t)row[1] * p[1] + (int64_t)row[2] * p[2] + (int64_t)row[3] * ZL_FX_ONE;
+    return (int64_t)row[0] * ZL_MESH_POS(p, 0) + (int64_t)row[1] * ZL_MESH_POS(p, 1) +
+           (int64_t)row[2] * ZL_MESH_POS(p, 2) + (int64_t)row[3] * ZL_FX_ONE;
 }
 
 void zl_vertex_residuals(const zl_source *s, uint16_t idx, const zl_wvert *w, int16_t *fx, int16_t *fy)
@@ -137,9 +138,9 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
 {
     const zl_fixed *p = &s->mesh->positions[idx * 3u];
     zl_vec3 v;
-    v.x = p[0];
-    v.y = p[1];
-    v.z = p[2];
+    v.x = ZL_MESH_POS(p, 0);
+    v.y = ZL_MESH_POS(p, 1);
+    v.z = ZL_MESH_POS(p, 2);
     if (s->mvp != NULL) {
         zl_vec4 c;
         if (zl_transform_point(s->mvp, v, &c) != ZL_OK)
@@ -347,7 +348,8 @@ static int vx_prepare(const zl_source *s, vx_setup *vs)
 static int vx_row(const vx_setup *vs, int r, const zl_fixed *p, int32_t *out)
 {
     const zl_fixed *m = &vs->m[r * 4];
-    int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    int64_t acc = vs->bias[r] + (int64_t)m[0] * ZL_MESH_POS(p, 0) + (int64_t)m[1] * ZL_MESH_POS(p, 1) +
+                  (int64_t)m[2] * ZL_MESH_POS(p, 2);
     if ((uint32_t)((uint64_t)acc >> 32) + 0x8000u > 0xFFFFu)
         return 0;
     *out = (int32_t)zl_floor_shift64(acc, 16);
@@ -386,7 +388,8 @@ static int32_t vx_window(uint32_t h, int32_t c, int neg, uint32_t w)
 static ZL_ALWAYS_INLINE int64_t vx_sum(const vx_setup *vs, int r, const zl_fixed *p)
 {
     const zl_fixed *m = &vs->m[r * 4];
-    return vs->bias[r] - 32768 + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    return vs->bias[r] - 32768 + (int64_t)m[0] * ZL_MESH_POS(p, 0) + (int64_t)m[1] * ZL_MESH_POS(p, 1) +
+           (int64_t)m[2] * ZL_MESH_POS(p, 2);
 }
 
 /* The residuals (zl_wvert fx, fy) of a cached vertex c, set up to its
@@ -412,8 +415,8 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
     c.y = 0;
     c.z = 0;
     ZL_CV_SET_FINE(&c, 0, 0);
-    if (!in_limit(p[0]) || !in_limit(p[1]) || !in_limit(p[2]) || !vx_row(vs, 0, p, &x) ||
-        !vx_row(vs, 1, p, &y) || !vx_row(vs, 2, p, &z) || !vx_row(vs, 3, p, &w))
+    if (!in_limit(ZL_MESH_POS(p, 0)) || !in_limit(ZL_MESH_POS(p, 1)) || !in_limit(ZL_MESH_POS(p, 2)) ||
+        !vx_row(vs, 0, p, &x) || !vx_row(vs, 1, p, &y) || !vx_row(vs, 2, p, &z) || !vx_row(vs, 3, p, &w))
         return c;
     c.x = ZL_CACHE_COMPLEX;
     if (!vx_inside(vs, x < 0 ? 0u - (uint32_t)x : (uint32_t)x, y < 0 ? 0u - (uint32_t)y : (uint32_t)y, z, w))
@@ -428,8 +431,8 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
     if (vs->exact != NULL) {
         const zl_fixed *m = &vs->m[12];
         /* bias[3] holds 2^15 for the rounding: the sum itself is without it */
-        c.z = depth_of_wsum(vs->exact, vs->bias[3] - 32768 + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] +
-                                           (int64_t)m[2] * p[2]);
+        c.z = depth_of_wsum(vs->exact, vs->bias[3] - 32768 + (int64_t)m[0] * ZL_MESH_POS(p, 0) +
+                                           (int64_t)m[1] * ZL_MESH_POS(p, 1) + (int64_t)m[2] * ZL_MESH_POS(p, 2));
     } else {
         c.z = depth_q16((uint32_t)z, (uint32_t)w);
     }
@@ -441,7 +444,8 @@ static ZL_NOINLINE zl_cached_vertex vx_cache(const vx_setup *vs, const zl_fixed 
 static ZL_ALWAYS_INLINE int32_t vx_row_fast(const vx_setup *vs, int r, const zl_fixed *p)
 {
     const zl_fixed *m = &vs->m[r * 4];
-    int64_t acc = vs->bias[r] + (int64_t)m[0] * p[0] + (int64_t)m[1] * p[1] + (int64_t)m[2] * p[2];
+    int64_t acc = vs->bias[r] + (int64_t)m[0] * ZL_MESH_POS(p, 0) + (int64_t)m[1] * ZL_MESH_POS(p, 1) +
+                  (int64_t)m[2] * ZL_MESH_POS(p, 2);
     return (int32_t)zl_floor_shift64(acc, 16); /* |acc| < 2^47 */
 }
 #endif
@@ -524,17 +528,19 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
 #else
     uint64_t n;
 #endif
-    if ((((uint32_t)p[0] + pf) | ((uint32_t)p[1] + pf) | ((uint32_t)p[2] + pf)) >= 2u * pf)
+    if ((((uint32_t)ZL_MESH_POS(p, 0) + pf) | ((uint32_t)ZL_MESH_POS(p, 1) + pf) |
+         ((uint32_t)ZL_MESH_POS(p, 2) + pf)) >= 2u * pf)
         return 0;
 #if ZL_MUL32_ONLY
-    ps.h0 = (uint32_t)zl_floor_shift32(p[0], 16);
-    ps.l0 = (uint32_t)p[0] & 0xFFFFu;
-    ps.h1 = (uint32_t)zl_floor_shift32(p[1], 16);
-    ps.l1 = (uint32_t)p[1] & 0xFFFFu;
-    ps.h2 = (uint32_t)zl_floor_shift32(p[2], 16);
-    ps.l2 = (uint32_t)p[2] & 0xFFFFu;
+    ps.h0 = (uint32_t)zl_floor_shift32(ZL_MESH_POS(p, 0), 16);
+    ps.l0 = (uint32_t)ZL_MESH_POS(p, 0) & 0xFFFFu;
+    ps.h1 = (uint32_t)zl_floor_shift32(ZL_MESH_POS(p, 1), 16);
+    ps.l1 = (uint32_t)ZL_MESH_POS(p, 1) & 0xFFFFu;
+    ps.h2 = (uint32_t)zl_floor_shift32(ZL_MESH_POS(p, 2), 16);
+    ps.l2 = (uint32_t)ZL_MESH_POS(p, 2) & 0xFFFFu;
     if (exact) {
-        wsum = vs->bias[3] + (int64_t)vs->m[12] * p[0] + (int64_t)vs->m[13] * p[1] + (int64_t)vs->m[14] * p[2];
+        wsum = vs->bias[3] + (int64_t)vs->m[12] * ZL_MESH_POS(p, 0) + (int64_t)vs->m[13] * ZL_MESH_POS(p, 1) +
+               (int64_t)vs->m[14] * ZL_MESH_POS(p, 2);
         w = (int32_t)zl_floor_shift64(wsum, 16);
     } else {
         w = vx_row_split(vs, 3, &ps);
@@ -542,7 +548,8 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
     z = vx_row_split(vs, 2, &ps);
 #else
     /* Each row where it is needed: the compiler keeps the order. */
-    wsum = vs->bias[3] + (int64_t)vs->m[12] * p[0] + (int64_t)vs->m[13] * p[1] + (int64_t)vs->m[14] * p[2];
+    wsum = vs->bias[3] + (int64_t)vs->m[12] * ZL_MESH_POS(p, 0) + (int64_t)vs->m[13] * ZL_MESH_POS(p, 1) +
+           (int64_t)vs->m[14] * ZL_MESH_POS(p, 2);
     w = (int32_t)zl_floor_shift64(wsum, 16); /* vx_row_fast of row 3 */
     z = vx_row_fast(vs, 2, p);
 #endif

@@ -413,7 +413,7 @@ static ZL_ALWAYS_INLINE int colour_plane_small(const small_frame *f, const zl_di
 static ZL_ALWAYS_INLINE int colour_plane(zl_tiny_colour *tc, const small_frame *f, const zl_div16 *d,
                                          const uint8_t *const *c, int ch)
 {
-    int32_t c0 = c[0][ch], e1 = (int32_t)c[1][ch] - c0, e2 = (int32_t)c[2][ch] - c0;
+    int32_t c0 = ZL_MESH_U8(c[0], ch), e1 = (int32_t)ZL_MESH_U8(c[1], ch) - c0, e2 = (int32_t)ZL_MESH_U8(c[2], ch) - c0;
     zl_attr a;
     if (f->c32 < 65536u && colour_plane_small(f, d, c0, e1, e2, &tc->cr[ch], &tc->cdx[ch], &tc->cdy[ch])) {
         tc->dc16[ch] = (uint32_t)zl_floor_shift32((int32_t)tc->cdx[ch], ZL_ATTR_FRAC - 16);

@@ -233,9 +233,9 @@ static ZL_ALWAYS_INLINE int draw_visible_gouraud(const zl_context *ctx, const zl
         const uint8_t *vc = src->mesh->vertex_colors, *col[3];
         zl_tiny_gouraud tg;
         int set;
-        col[0] = vc + idx[0] * 3u;
-        col[1] = vc + idx[1] * 3u;
-        col[2] = vc + idx[2] * 3u;
+        col[0] = vc + ZL_MESH_IDX(idx, 0) * 3u;
+        col[1] = vc + ZL_MESH_IDX(idx, 1) * 3u;
+        col[2] = vc + ZL_MESH_IDX(idx, 2) * 3u;
         set = zl_tiny_gouraud_setup(&tg, c, col, src->height);
         if (set > 0)
             zl_tiny_gouraud_draw(&tg, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride,
@@ -337,18 +337,18 @@ static ZL_ALWAYS_INLINE uint32_t draw_plain_body(const zl_context *ctx, const zl
 #if ZL_DRAW_CACHE_SLOTS > 0
         zl_cached_vertex v[3];
         if (sc != NULL) {
-            small_fetch(src, sc, idx[0], &v[0]);
-            small_fetch(src, sc, idx[1], &v[1]);
-            small_fetch(src, sc, idx[2], &v[2]);
+            small_fetch(src, sc, ZL_MESH_IDX(idx, 0), &v[0]);
+            small_fetch(src, sc, ZL_MESH_IDX(idx, 1), &v[1]);
+            small_fetch(src, sc, ZL_MESH_IDX(idx, 2), &v[2]);
             c[0] = &v[0];
             c[1] = &v[1];
             c[2] = &v[2];
         } else
 #endif
         {
-            c[0] = cache + idx[0];
-            c[1] = cache + idx[1];
-            c[2] = cache + idx[2];
+            c[0] = cache + ZL_MESH_IDX(idx, 0);
+            c[1] = cache + ZL_MESH_IDX(idx, 1);
+            c[2] = cache + ZL_MESH_IDX(idx, 2);
         }
         x0 = c[0]->x;
         x1 = c[1]->x;

@@ -179,9 +179,9 @@ int zl_frame_rows_cached(const zl_frame *f, unsigned mi, uint32_t t, int32_t *fi
                         sty->polygon_back != ZL_POLY_FILL))
         return -1;
     idx = m->mesh.indices + (size_t)t * 3u;
-    c0 = &cache[idx[0]];
-    c1 = &cache[idx[1]];
-    c2 = &cache[idx[2]];
+    c0 = &cache[ZL_MESH_IDX(idx, 0)];
+    c1 = &cache[ZL_MESH_IDX(idx, 1)];
+    c2 = &cache[ZL_MESH_IDX(idx, 2)];
     if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID)
         return -1;
     return classify_cached(c0, c1, c2, (int)m->cull_code - 1, f->cfg.width, f->cfg.height, first, end);
@@ -246,7 +246,8 @@ static ZL_ALWAYS_INLINE uint32_t fill_pass(zl_frame *f, plan_pass *p, const zl_f
     idx = m->mesh.indices + (size_t)from * 3u;
     for (t = from; t < count; t++, id++, idx += 3) {
         int32_t first, end;
-        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        const zl_cached_vertex *c0 = &cache[ZL_MESH_IDX(idx, 0)], *c1 = &cache[ZL_MESH_IDX(idx, 1)],
+                               *c2 = &cache[ZL_MESH_IDX(idx, 2)];
         if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
             p->n = n;
             classify_polygon(f, p, m, s, sty, t);
@@ -327,7 +328,8 @@ static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_
     int cull_sign = (int)m->cull_code - 1;
     for (t = 0; t < count; t++, id++, idx += 3) {
         int32_t first, end;
-        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        const zl_cached_vertex *c0 = &cache[ZL_MESH_IDX(idx, 0)], *c1 = &cache[ZL_MESH_IDX(idx, 1)],
+                               *c2 = &cache[ZL_MESH_IDX(idx, 2)];
         if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
             p->n = n;
             classify_polygon(f, p, m, s, sty, t);
@@ -370,9 +372,9 @@ static ZL_NOINLINE void place_fill_seen(zl_frame *f, plan_pass *p, const zl_fram
         const zl_cached_vertex *c0, *c1, *c2;
         if (!(seen[id >> 3] & (1u << (id & 7u))))
             continue;
-        c0 = &cache[idx[0]];
-        c1 = &cache[idx[1]];
-        c2 = &cache[idx[2]];
+        c0 = &cache[ZL_MESH_IDX(idx, 0)];
+        c1 = &cache[ZL_MESH_IDX(idx, 1)];
+        c2 = &cache[ZL_MESH_IDX(idx, 2)];
         if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
             classify_polygon(f, p, m, s, sty, t);
             continue;
@@ -417,7 +419,8 @@ static ZL_ALWAYS_INLINE void fill_window(zl_frame *f, plan_pass *p, const zl_fra
     int cull_sign = (int)m->cull_code - 1;
     for (t = 0; t < count; t++, id++, idx += 3) {
         int32_t first, end;
-        const zl_cached_vertex *c0 = &cache[idx[0]], *c1 = &cache[idx[1]], *c2 = &cache[idx[2]];
+        const zl_cached_vertex *c0 = &cache[ZL_MESH_IDX(idx, 0)], *c1 = &cache[ZL_MESH_IDX(idx, 1)],
+                               *c2 = &cache[ZL_MESH_IDX(idx, 2)];
         if (c0->x <= ZL_CACHE_INVALID || c1->x <= ZL_CACHE_INVALID || c2->x <= ZL_CACHE_INVALID) {
             p->n = n;
             classify_polygon_window(f, p, m, s, sty, t);

@@ -102,7 +102,7 @@ static ZL_ALWAYS_INLINE int activate_cached(zl_frame *f, uint8_t mi, const zl_so
     const zl_frame_mesh *m = &f->meshes[mi];
     const uint16_t *idx = m->mesh.indices + t * 3u;
     const zl_cached_vertex *c[3];
-    uint16_t slot = f->free_head, i0 = idx[0], i1 = idx[1], i2 = idx[2];
+    uint16_t slot = f->free_head, i0 = ZL_MESH_IDX(idx, 0), i1 = ZL_MESH_IDX(idx, 1), i2 = ZL_MESH_IDX(idx, 2);
     zl_active *a;
     c[0] = s->cache + i0;
     c[1] = s->cache + i1;
@@ -143,16 +143,16 @@ static ZL_NOINLINE int activate_tiny_gouraud(zl_frame *f, uint8_t mi, const zl_s
     uint16_t slot = f->free_head;
     zl_active *a;
     int set;
-    c[0] = s->cache + idx[0];
-    c[1] = s->cache + idx[1];
-    c[2] = s->cache + idx[2];
+    c[0] = s->cache + ZL_MESH_IDX(idx, 0);
+    c[1] = s->cache + ZL_MESH_IDX(idx, 1);
+    c[2] = s->cache + ZL_MESH_IDX(idx, 2);
     if (c[0]->x <= ZL_CACHE_INVALID || c[1]->x <= ZL_CACHE_INVALID || c[2]->x <= ZL_CACHE_INVALID)
         return 0;
     if (slot == ZL_LIST_END)
         return 1; /* cannot happen: planning bounded the peak */
-    col[0] = vc + idx[0] * 3u;
-    col[1] = vc + idx[1] * 3u;
-    col[2] = vc + idx[2] * 3u;
+    col[0] = vc + ZL_MESH_IDX(idx, 0) * 3u;
+    col[1] = vc + ZL_MESH_IDX(idx, 1) * 3u;
+    col[2] = vc + ZL_MESH_IDX(idx, 2) * 3u;
     a = &f->pool[slot];
     set = zl_tiny_gouraud_setup_record(a, tiny_colour_of(f, slot), c, col, s->height);
     if (set <= 0)
