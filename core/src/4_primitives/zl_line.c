@@ -518,6 +518,8 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
             zl_tri_apply_offset(t, off);
         return 1;
     }
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): no line or point modes (zl_style_check) */
+        return 0;
     /* Line and point pieces: offset by the slope of the triangle's plane. */
     off = zl_tri_offset(&poly->v[0], &poly->v[plane], &poly->v[plane + 1], sty);
     {

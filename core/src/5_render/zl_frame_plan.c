@@ -80,6 +80,8 @@ static ZL_NOINLINE void classify_lines(zl_frame *f, plan_pass *p, unsigned mi, c
 {
     const zl_frame_mesh *m = &f->meshes[mi];
     uint32_t t;
+    if (!ZL_FEATURE_LINES && !ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h): no such records */
+        return;
     for (t = 0; t < m->mesh.triangle_count; t++) {
         zl_active rec;
         if (prim_record(f, mi, s, t, &rec))
@@ -93,6 +95,8 @@ static ZL_NOINLINE void classify_pieces(zl_frame *f, plan_pass *p, const zl_fram
                                         const zl_style *sty)
 {
     uint32_t t;
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): no line or point modes (zl_style_check) */
+        return;
     for (t = 0; t < m->mesh.triangle_count; t++) {
         zl_poly poly;
         unsigned k, n, pieces = 0;
