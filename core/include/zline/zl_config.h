@@ -132,11 +132,24 @@
  *                        of 28,104). Off, the plane goes through the
  *                        snapped vertices whatever the mapping (zline.h,
  *                        Pseudodepth); nothing returns ZL_ERR_UNSUPPORTED.
+ *   ZL_FEATURE_LIGHTING  the state's light (zl_state.light_on, ambient,
+ *                        light_dir): off, a state with light_on set is
+ *                        refused (zl_state_check)
+ *   ZL_FEATURE_OFFSET    polygon offset (zl_style.offset_factor,
+ *                        .offset_units; outlines are then drawn unmoved)
+ *   ZL_FEATURE_DEPTH_FUNCS  the depth functions beyond ZL_LESS and ZL_LEQUAL:
+ *                        off, zl_state.depth_func must be one of those two
+ *                        or ZL_ALWAYS (which costs nothing: the loops of
+ *                        depth_test 0 take it) when depth_test is set
+ *   ZL_FEATURE_FORMATS   the colour formats beyond ZL_FORMAT_RGB565 (native
+ *                        byte order): off, a target or frame of another
+ *                        format is refused (zl_init, zl_frame_begin)
  *
- * Off, a style that asks for the feature makes every draw and submission
- * with it return ZL_ERR_UNSUPPORTED (zl_style_check). Flat and Gouraud
- * triangles, every depth function, frame, band and scanline modes and the
- * visibility methods (their own API, linked only when called) stay.
+ * Off, a style (a state, a format) that asks for the feature makes every
+ * draw and submission with it return ZL_ERR_UNSUPPORTED (zl_style_check,
+ * zl_state_check). Flat and Gouraud triangles, frame, band and scanline
+ * modes and the visibility methods (their own API, linked only when
+ * called) stay.
  */
 #ifndef ZL_FEATURE_TEXTURES
 #define ZL_FEATURE_TEXTURES 1
@@ -153,9 +166,24 @@
 #ifndef ZL_FEATURE_EXACT_DEPTH
 #define ZL_FEATURE_EXACT_DEPTH 1
 #endif
+#ifndef ZL_FEATURE_LIGHTING
+#define ZL_FEATURE_LIGHTING 1
+#endif
+#ifndef ZL_FEATURE_OFFSET
+#define ZL_FEATURE_OFFSET 1
+#endif
+#ifndef ZL_FEATURE_DEPTH_FUNCS
+#define ZL_FEATURE_DEPTH_FUNCS 1
+#endif
+#ifndef ZL_FEATURE_FORMATS
+#define ZL_FEATURE_FORMATS 1
+#endif
 #if (ZL_FEATURE_TEXTURES != 0 && ZL_FEATURE_TEXTURES != 1) || (ZL_FEATURE_BLEND != 0 && ZL_FEATURE_BLEND != 1) || \
     (ZL_FEATURE_LINES != 0 && ZL_FEATURE_LINES != 1) || (ZL_FEATURE_OUTLINES != 0 && ZL_FEATURE_OUTLINES != 1) || \
-    (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1)
+    (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1) ||                                              \
+    (ZL_FEATURE_LIGHTING != 0 && ZL_FEATURE_LIGHTING != 1) || (ZL_FEATURE_OFFSET != 0 && ZL_FEATURE_OFFSET != 1) || \
+    (ZL_FEATURE_DEPTH_FUNCS != 0 && ZL_FEATURE_DEPTH_FUNCS != 1) ||                                              \
+    (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1)
 #error "each ZL_FEATURE_* must be 0 or 1"
 #endif
 
@@ -166,7 +194,9 @@
  */
 #define ZL_FEATURES                                                                                       \
     ((unsigned)ZL_FEATURE_TEXTURES | ((unsigned)ZL_FEATURE_BLEND << 1) | ((unsigned)ZL_FEATURE_LINES << 2) | \
-     ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4))
+     ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4) |                      \
+     ((unsigned)ZL_FEATURE_LIGHTING << 5) | ((unsigned)ZL_FEATURE_OFFSET << 6) |                           \
+     ((unsigned)ZL_FEATURE_DEPTH_FUNCS << 7) | ((unsigned)ZL_FEATURE_FORMATS << 8))
 
 /*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library
