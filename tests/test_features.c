@@ -3,7 +3,7 @@
  * The feature switches of zl_config.h (issue 23). Built against the default
  * library (every feature on) and against the minimal configuration
  * (test_features_minimal: ZL_FEATURE_TEXTURES, _BLEND, _LINES, _OUTLINES,
- * _EXACT_DEPTH, _LIGHTING, _OFFSET, _DEPTH_FUNCS, _FORMATS all 0). For each
+ * _EXACT_DEPTH, _LIGHTING, _OFFSET, _DEPTH_FUNCS, _FORMATS, _SPLIT all 0). For each
  * switch, the API that needs the feature returns ZL_ERR_UNSUPPORTED exactly
  * when the feature is compiled out, in frame mode and in scanline mode, and
  * writes no pixel then; what stays (a flat and a Gouraud triangle, RGB565,
@@ -149,6 +149,32 @@ static void test_states(void)
     st.depth_test = 0;
     st.depth_func = ZL_GREATER;
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_state_check(&st));
+}
+
+/* A split frame: zl_frame_begin with two parts, zl_frame_split and
+ * zl_frame_prepare; with the feature off the begin refuses two parts and
+ * the split and prepare refuse a one-part frame. */
+static void test_split(void)
+{
+    static uint64_t second_work[2048];
+    zl_frame f, second;
+    zl_frame_config cfg;
+    zl_mesh m;
+    zl_state st;
+    zl_rgb black = {0, 0, 0};
+    zt_frame_config_of(&cfg, W, H, 1, ZL_FORMAT_RGB565);
+    zt_frame_capacity(&cfg, 4, 16, 16, 16);
+    cfg.parts = 2;
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_SPLIT), zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
+    if (!ZL_FEATURE_SPLIT) {
+        cfg.parts = 1;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
+    }
+    mesh_of(&m);
+    zl_state_default(&st);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_SPLIT), zl_frame_split(&f, &second, second_work, sizeof second_work, 0));
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_SPLIT), zl_frame_prepare(&f));
 }
 
 static void test_formats(void)
@@ -330,6 +356,7 @@ int main(void)
     RUN_TEST(test_styles);
     RUN_TEST(test_states);
     RUN_TEST(test_formats);
+    RUN_TEST(test_split);
     RUN_TEST(test_less_and_lequal);
     RUN_TEST(test_lines_and_outlines);
     RUN_TEST(test_scanline_mode);

@@ -144,6 +144,9 @@
  *   ZL_FEATURE_FORMATS   the colour formats beyond ZL_FORMAT_RGB565 (native
  *                        byte order): off, a target or frame of another
  *                        format is refused (zl_init, zl_frame_begin)
+ *   ZL_FEATURE_SPLIT     a scanline frame split across two cores
+ *                        (zl_frame_split, zl_frame_prepare,
+ *                        zl_frame_config.parts = 2: refused when off)
  *
  * Off, a style (a state, a format) that asks for the feature makes every
  * draw and submission with it return ZL_ERR_UNSUPPORTED (zl_style_check,
@@ -178,12 +181,15 @@
 #ifndef ZL_FEATURE_FORMATS
 #define ZL_FEATURE_FORMATS 1
 #endif
+#ifndef ZL_FEATURE_SPLIT
+#define ZL_FEATURE_SPLIT 1
+#endif
 #if (ZL_FEATURE_TEXTURES != 0 && ZL_FEATURE_TEXTURES != 1) || (ZL_FEATURE_BLEND != 0 && ZL_FEATURE_BLEND != 1) || \
     (ZL_FEATURE_LINES != 0 && ZL_FEATURE_LINES != 1) || (ZL_FEATURE_OUTLINES != 0 && ZL_FEATURE_OUTLINES != 1) || \
     (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1) ||                                              \
     (ZL_FEATURE_LIGHTING != 0 && ZL_FEATURE_LIGHTING != 1) || (ZL_FEATURE_OFFSET != 0 && ZL_FEATURE_OFFSET != 1) || \
     (ZL_FEATURE_DEPTH_FUNCS != 0 && ZL_FEATURE_DEPTH_FUNCS != 1) ||                                              \
-    (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1)
+    (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1) || (ZL_FEATURE_SPLIT != 0 && ZL_FEATURE_SPLIT != 1)
 #error "each ZL_FEATURE_* must be 0 or 1"
 #endif
 
@@ -196,7 +202,8 @@
     ((unsigned)ZL_FEATURE_TEXTURES | ((unsigned)ZL_FEATURE_BLEND << 1) | ((unsigned)ZL_FEATURE_LINES << 2) | \
      ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4) |                      \
      ((unsigned)ZL_FEATURE_LIGHTING << 5) | ((unsigned)ZL_FEATURE_OFFSET << 6) |                           \
-     ((unsigned)ZL_FEATURE_DEPTH_FUNCS << 7) | ((unsigned)ZL_FEATURE_FORMATS << 8))
+     ((unsigned)ZL_FEATURE_DEPTH_FUNCS << 7) | ((unsigned)ZL_FEATURE_FORMATS << 8) |                      \
+     ((unsigned)ZL_FEATURE_SPLIT << 9))
 
 /*
  * ZL_ASSERT(x): internal consistency checks. Off by default (the library

@@ -695,7 +695,7 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
         if (st != ZL_OK)
             return st;
         f->planned = 1;
-        if (f->next_row != 0) /* the second part of a split frame */
+        if (ZL_FEATURE_SPLIT && f->next_row != 0) /* the second part of a split frame */
             catch_up(f);
     }
     if (f->next_row >= f->end_row)
