@@ -111,6 +111,23 @@
 #endif
 
 /*
+ * ZL_FAST_PATHS: 1 (the default) keeps the copies of the common paths that
+ * buy speed with flash: the 32-bit set-up of cached flat triangles
+ * (zl_tri_setup_flat's setup_flat_32), frame mode's loops over the vertex
+ * cache for plain flat and Gouraud draws (draw_plain, draw_plain_gouraud)
+ * and scanline mode's row walks specialised for depth LESS and LEQUAL
+ * (render_row_less, _lequal). 0 sends those triangles and rows to the
+ * general set-up, draw and walk: the same pixels (the *_fast_paths_off
+ * tests), slower. Part of README's minimal-small configuration.
+ */
+#ifndef ZL_FAST_PATHS
+#define ZL_FAST_PATHS 1
+#endif
+#if ZL_FAST_PATHS != 0 && ZL_FAST_PATHS != 1
+#error "ZL_FAST_PATHS must be 0 or 1"
+#endif
+
+/*
  * Feature switches (issue 23): pay only for what you draw. Each is 1 (the
  * default: compiled in) or 0 (compiled out: the code that draws it is
  * unreachable, so the compiler and the linker's section garbage collection

@@ -520,7 +520,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
         }
     }
 #endif
-    if (src.cache != NULL && plain_flat(ctx)) {
+    if (ZL_FAST_PATHS && src.cache != NULL && plain_flat(ctx)) { /* (off: draw_general, the same pixels) */
         int cull_sign = culled_area_sign(&ctx->state);
         int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
         for (t = draw_plain(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;
@@ -528,7 +528,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
             draw_general(ctx, &src, t, &ss, 0);
         return ZL_OK;
     }
-    if (src.cache != NULL && plain_gouraud(ctx, mesh)) {
+    if (ZL_FAST_PATHS && src.cache != NULL && plain_gouraud(ctx, mesh)) {
         int cull_sign = culled_area_sign(&ctx->state);
         int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
         for (t = draw_plain_gouraud(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;

@@ -538,7 +538,7 @@ static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, 
         if (f->meshes[mi].span.func != func)
             flags = 0;
     }
-    if (flags == 0)
+    if (flags == 0 || !ZL_FAST_PATHS) /* (the LESS and LEQUAL copies: ZL_FAST_PATHS, zl_config.h) */
         render_row_plain(f, y, i, end, crow, zrow);
     else if (func == ZL_LESS)
         render_row_less(f, y, i, end, crow, zrow);
