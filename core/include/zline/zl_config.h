@@ -112,13 +112,15 @@
 
 /*
  * ZL_FAST_PATHS: 1 (the default) keeps the copies of the common paths that
- * buy speed with flash: the 32-bit set-up of cached flat triangles
- * (zl_tri_setup_flat's setup_flat_32), frame mode's loops over the vertex
- * cache for plain flat and Gouraud draws (draw_plain, draw_plain_gouraud)
- * and scanline mode's row walks specialised for depth LESS and LEQUAL
- * (render_row_less, _lequal). 0 sends those triangles and rows to the
- * general set-up, draw and walk: the same pixels (the *_fast_paths_off
- * tests), slower. Part of README's minimal-small configuration.
+ * buy speed with flash: the 32-bit vertex transform (vx_fast) and set-up of
+ * cached flat triangles (setup_flat_32), frame mode's loops over the vertex
+ * cache for plain flat and Gouraud draws (draw_plain, draw_plain_gouraud),
+ * the RGB565 LESS / LEQUAL loops of flat rows and spans and of Gouraud
+ * lanes (rows_flat_565, span_flat_565 / _exact, lanes_fast), and scanline
+ * mode's row walks specialised for LESS and LEQUAL (render_row_less,
+ * _lequal). 0 sends those vertices, triangles, spans and rows to the
+ * general code: the same pixels (the *_fast_paths_off tests), slower. Part
+ * of README's minimal-small configuration.
  */
 #ifndef ZL_FAST_PATHS
 #define ZL_FAST_PATHS 1
