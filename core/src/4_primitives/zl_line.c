@@ -407,7 +407,8 @@ static int tri_mode(const zl_source *s, const zl_style *sty, const zl_poly *poly
 
 static int uses_modes(const zl_style *sty)
 {
-    return sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL);
+    /* (compiled out with ZL_FEATURE_LINES: zl_style_check refuses the modes) */
+    return ZL_FEATURE_LINES && sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL);
 }
 
 unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly)
