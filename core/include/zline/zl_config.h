@@ -162,7 +162,9 @@
  *                        depth_test 0 take it) when depth_test is set
  *   ZL_FEATURE_FORMATS   the colour formats beyond ZL_FORMAT_RGB565 (native
  *                        byte order): off, a target or frame of another
- *                        format is refused (zl_init, zl_frame_begin)
+ *                        format is refused (zl_init, zl_frame_begin; the
+ *                        visibility methods and the overlay, with pixel
+ *                        code of their own, keep every format)
  *   ZL_FEATURE_SPLIT     a scanline frame split across two cores
  *                        (zl_frame_split, zl_frame_prepare,
  *                        zl_frame_config.parts = 2: refused when off)
