@@ -153,7 +153,8 @@ static void test_cached_small_triangles_equal_the_general_path(void)
         zl_state_default(&st);
         st.depth_func = (scene & 1) ? ZL_LEQUAL : ZL_LESS;
         st.cull = (scene & 2) ? ZL_CULL_BACK : ZL_CULL_NONE;
-        st.light_on = (uint8_t)((scene >> 2) & 1);
+        /* lit where the light is compiled in (test_features: refused otherwise) */
+        st.light_on = (uint8_t)(ZL_FEATURE_LIGHTING && ((scene >> 2) & 1));
         random_mesh((scene >> 3) & 3, (scene >> 5) & 1);
         draw_twice(color_a, depth_a, vcache, sizeof vcache, NO_DRAW_CACHE, &st, &m, NULL);
         draw_twice(color_b, depth_b, NULL, 0, NO_DRAW_CACHE, &st, &m, NULL);
@@ -197,7 +198,7 @@ static void test_shared_vertices(void)
         zl_state_default(&st);
         st.depth_func = (scene & 1) ? ZL_LEQUAL : ZL_LESS;
         st.cull = (scene & 2) ? ZL_CULL_BACK : ZL_CULL_NONE;
-        st.light_on = (uint8_t)((scene >> 2) & 1);
+        st.light_on = (uint8_t)(ZL_FEATURE_LIGHTING && ((scene >> 2) & 1)); /* as above */
         for (j = 0; j < GH; j++)
             for (i = 0; i < GW; i++) {
                 zl_fixed *p = &gpos[(j * GW + i) * 3];

@@ -667,6 +667,9 @@ static void rnd_vertex(zl_fixed *v, const zl_fixed *near, unsigned edge_bits)
 static void test_lighting_matches_64bit_definition(void)
 {
     uint32_t k, lit = 0, dark = 0;
+#if !ZL_FEATURE_LIGHTING
+    TEST_IGNORE_MESSAGE("ZL_FEATURE_LIGHTING=0: the light is compiled out (test_features: refused)");
+#endif
     for (k = 0; k < ZT_ROUNDS(200000); k++) {
         zl_fixed pos[9];
         uint16_t idx[3] = {0, 1, 2};
@@ -747,6 +750,9 @@ static void test_lighting_edges(void)
                                  -65539, -65540, -65543, 24576, -32768, 49152, INT32_MAX, INT32_MIN};
     uint32_t k;
     unsigned i;
+#if !ZL_FEATURE_LIGHTING
+    TEST_IGNORE_MESSAGE("ZL_FEATURE_LIGHTING=0: the light is compiled out (test_features: refused)");
+#endif
     for (k = 0; k < ZT_ROUNDS(40000); k++) {
         zl_fixed pos[9];
         uint16_t idx[3] = {0, 1, 2};

@@ -2,12 +2,14 @@
 /*
  * The feature switches of zl_config.h (issue 23). Built against the default
  * library (every feature on) and against the minimal configuration
- * (test_features_minimal: ZL_FEATURE_TEXTURES, _BLEND, _LINES, _OUTLINES
- * all 0). For each switch, the API that needs the feature returns
- * ZL_ERR_UNSUPPORTED exactly when the feature is compiled out, in frame mode
- * and in scanline mode, and writes no pixel then; what stays (a flat and a
- * Gouraud triangle) draws what the test's own edge-function reference
- * says: the pixels whose centres are inside.
+ * (test_features_minimal: ZL_FEATURE_TEXTURES, _BLEND, _LINES, _OUTLINES,
+ * _EXACT_DEPTH, _LIGHTING, _OFFSET, _DEPTH_FUNCS, _FORMATS, _SPLIT all 0). For each
+ * switch, the API that needs the feature returns ZL_ERR_UNSUPPORTED exactly
+ * when the feature is compiled out, in frame mode and in scanline mode, and
+ * writes no pixel then; what stays (a flat and a Gouraud triangle, RGB565,
+ * depth LESS and LEQUAL) draws what the test's own edge-function reference
+ * says: the pixels whose centres are inside, in the packed RGB565 colour,
+ * kept or replaced at equal depth as the depth function says.
  */
 #include <string.h>
 
@@ -96,11 +98,101 @@ static void set_line_mode(zl_style *s, zl_texture *t)
     s->polygon_front = s->polygon_back = ZL_POLY_LINE;
 }
 
+static void set_offset(zl_style *s, zl_texture *t)
+{
+    (void)t;
+    s->offset_units = ZL_FX_INT(4);
+}
+
 static void test_styles(void)
 {
     check_style(set_texture, ZL_FEATURE_TEXTURES);
     check_style(set_blend, ZL_FEATURE_BLEND);
     check_style(set_line_mode, ZL_FEATURE_LINES);
+    check_style(set_offset, ZL_FEATURE_OFFSET);
+}
+
+/* A draw with the state of `set`, as check_style. */
+static void check_state(void (*set)(zl_state *s), int feature_on)
+{
+    zl_context ctx;
+    zl_mesh m;
+    context_of(&ctx);
+    mesh_of(&m);
+    set(&ctx.state);
+    TEST_ASSERT_EQUAL_INT(expected(feature_on), zl_state_check(&ctx.state));
+    TEST_ASSERT_EQUAL_INT(expected(feature_on), zl_draw_mesh(&ctx, &m, NULL));
+    TEST_ASSERT_EQUAL_INT(feature_on, pixels_written() > 0);
+}
+
+static void set_light(zl_state *s)
+{
+    s->light_on = 1;
+}
+static void set_notequal(zl_state *s)
+{
+    s->depth_func = ZL_NOTEQUAL; /* passes against the cleared 65535 */
+}
+static void set_always(zl_state *s)
+{
+    s->depth_func = ZL_ALWAYS; /* kept with the other functions off: it costs nothing */
+}
+
+static void test_states(void)
+{
+    zl_state st;
+    check_state(set_light, ZL_FEATURE_LIGHTING);
+    check_state(set_notequal, ZL_FEATURE_DEPTH_FUNCS);
+    check_state(set_always, 1);
+    /* with the depth test off the function is not used: any is accepted */
+    zl_state_default(&st);
+    st.depth_test = 0;
+    st.depth_func = ZL_GREATER;
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_state_check(&st));
+}
+
+/* A split frame: zl_frame_begin with two parts, zl_frame_split and
+ * zl_frame_prepare; with the feature off the begin refuses two parts and
+ * the split and prepare refuse a one-part frame. */
+static void test_split(void)
+{
+    static uint64_t second_work[2048];
+    zl_frame f, second;
+    zl_frame_config cfg;
+    zl_mesh m;
+    zl_state st;
+    zl_rgb black = {0, 0, 0};
+    zt_frame_config_of(&cfg, W, H, 1, ZL_FORMAT_RGB565);
+    zt_frame_capacity(&cfg, 4, 16, 16, 16);
+    cfg.parts = 2;
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_SPLIT), zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
+    if (!ZL_FEATURE_SPLIT) {
+        cfg.parts = 1;
+        TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
+    }
+    mesh_of(&m);
+    zl_state_default(&st);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_SPLIT), zl_frame_split(&f, &second, second_work, sizeof second_work, 0));
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_SPLIT), zl_frame_prepare(&f));
+}
+
+static void test_formats(void)
+{
+    static const zl_format others[2] = {ZL_FORMAT_RGB565_BE, ZL_FORMAT_RGB888};
+    zl_rgb black = {0, 0, 0};
+    int k;
+    for (k = 0; k < 2; k++) {
+        zl_context ctx;
+        zl_target tg;
+        zl_frame f;
+        zl_frame_config cfg;
+        zt_target_packed(&tg, color, depth, W, H / 2, others[k]); /* 3 bytes a pixel fit in half the rows */
+        TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_FORMATS), zl_init(&ctx, &tg));
+        zt_frame_config_of(&cfg, W, H, 1, others[k]);
+        zt_frame_capacity(&cfg, 4, 16, 16, 16);
+        TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_FORMATS), zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
+    }
 }
 
 static void test_lines_and_outlines(void)
@@ -142,7 +234,7 @@ static void test_scanline_mode(void)
     zl_rgb black = {0, 0, 0};
     static const zl_fixed lpos[6] = {1 * ZL_FX_ONE, 1 * ZL_FX_ONE, 0, 20 * ZL_FX_ONE, 12 * ZL_FX_ONE, 0};
     zt_frame_config_of(&cfg, W, H, 1, ZL_FORMAT_RGB565);
-    zt_frame_capacity(&cfg, 4, 16, 16, 16);
+    zt_frame_capacity(&cfg, 8, 32, 32, 16);
     cfg.styled = 1;
     cfg.textured = 1; /* (blending in scanline mode needs it) */
     TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, black, 65535));
@@ -158,6 +250,13 @@ static void test_scanline_mode(void)
     l.count = 2;
     l.prim = ZL_PRIM_LINES;
     TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_LINES), zl_frame_add_lines(&f, &l, NULL, &st, &sty));
+    sty.offset_factor = ZL_FX_ONE;
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_OFFSET), zl_frame_add_mesh_styled(&f, &m, NULL, &st, &sty));
+    st.light_on = 1;
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_LIGHTING), zl_frame_add_mesh(&f, &m, NULL, &st));
+    zl_state_default(&st);
+    st.depth_func = ZL_GEQUAL;
+    TEST_ASSERT_EQUAL_INT(expected(ZL_FEATURE_DEPTH_FUNCS), zl_frame_add_mesh(&f, &m, NULL, &st));
 }
 
 /* Twice the signed area of (a, b, p), pixel units. */
@@ -166,11 +265,18 @@ static long edge(const long *a, const long *b, long px2, long py2)
     return (b[0] * 2 - a[0] * 2) * (py2 - a[1] * 2) - (b[1] * 2 - a[1] * 2) * (px2 - a[0] * 2);
 }
 
+static int inside_ref(int x, int y)
+{
+    static const long v[3][2] = {{2, 2}, {20, 3}, {6, 15}};
+    long px2 = 2 * x + 1, py2 = 2 * y + 1;
+    long e0 = edge(v[0], v[1], px2, py2), e1 = edge(v[1], v[2], px2, py2), e2 = edge(v[2], v[0], px2, py2);
+    return (e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0);
+}
+
 /* Flat and Gouraud triangles stay in every configuration: the pixels the
  * draw writes are those whose centres are strictly inside the triangle. */
 static void test_triangles_stay(void)
 {
-    static const long v[3][2] = {{2, 2}, {20, 3}, {6, 15}};
     int shading, x, y;
     for (shading = 0; shading < 2; shading++) {
         zl_context ctx;
@@ -183,19 +289,75 @@ static void test_triangles_stay(void)
         }
         TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
         for (y = 0; y < H; y++)
-            for (x = 0; x < W; x++) {
-                long px2 = 2 * x + 1, py2 = 2 * y + 1;
-                long e0 = edge(v[0], v[1], px2, py2), e1 = edge(v[1], v[2], px2, py2), e2 = edge(v[2], v[0], px2, py2);
-                int inside = (e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0);
-                TEST_ASSERT_EQUAL_INT_MESSAGE(inside, depth[y * W + x] != 65535, "coverage differs from the reference");
-            }
+            for (x = 0; x < W; x++)
+                TEST_ASSERT_EQUAL_INT_MESSAGE(inside_ref(x, y), depth[y * W + x] != 65535,
+                                              "coverage differs from the reference");
     }
+}
+
+/* RGB565 of 8-bit channels, written out here (zline.h: the top bits). */
+static uint16_t rgb565_ref(unsigned r, unsigned g, unsigned b)
+{
+    return (uint16_t)(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+}
+
+/* The depth functions every configuration keeps, in frame and scanline
+ * mode: a second flat triangle at the same depth replaces the first one's
+ * pixels with LEQUAL and leaves them with LESS; outside, the clear colour. */
+static void test_less_and_lequal(void)
+{
+    static const zl_rgb first = {40, 200, 90}, second = {250, 16, 128};
+    zl_rgb clear = {8, 4, 24};
+    int func, mode, x, y;
+    for (func = 0; func < 2; func++)
+        for (mode = 0; mode < 2; mode++) {
+            zl_state st;
+            zl_mesh m;
+            uint16_t want_in = rgb565_ref(func ? second.r : first.r, func ? second.g : first.g,
+                                          func ? second.b : first.b);
+            mesh_of(&m);
+            zl_state_default(&st);
+            st.depth_func = func ? ZL_LEQUAL : ZL_LESS;
+            if (mode == 0) {
+                zl_context ctx;
+                zl_target tg;
+                zt_target_packed(&tg, color, depth, W, H, ZL_FORMAT_RGB565);
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_init(&ctx, &tg));
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_clear(&ctx, clear, 65535));
+                ctx.state = st;
+                ctx.state.color = first;
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+                ctx.state.color = second;
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_draw_mesh(&ctx, &m, NULL));
+            } else {
+                zl_frame f;
+                zl_frame_config cfg;
+                zl_state st2 = st;
+                zt_frame_copy to = {color, NULL};
+                zt_frame_config_of(&cfg, W, H, 1, ZL_FORMAT_RGB565);
+                zt_frame_capacity(&cfg, 4, 16, 16, 16);
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_begin(&f, &cfg, work, sizeof work, clear, 65535));
+                st.color = first;
+                st2.color = second;
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st));
+                TEST_ASSERT_EQUAL_INT(ZL_OK, zl_frame_add_mesh(&f, &m, NULL, &st2));
+                TEST_ASSERT_EQUAL_INT(0, zl_frame_render(&f, zt_band_copy_fn, &to));
+            }
+            for (y = 0; y < H; y++)
+                for (x = 0; x < W; x++)
+                    TEST_ASSERT_EQUAL_UINT16_MESSAGE(inside_ref(x, y) ? want_in : rgb565_ref(clear.r, clear.g, clear.b),
+                                                    color[y * W + x], mode ? "scanline mode" : "frame mode");
+        }
 }
 
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_styles);
+    RUN_TEST(test_states);
+    RUN_TEST(test_formats);
+    RUN_TEST(test_split);
+    RUN_TEST(test_less_and_lequal);
     RUN_TEST(test_lines_and_outlines);
     RUN_TEST(test_scanline_mode);
     RUN_TEST(test_triangles_stay);

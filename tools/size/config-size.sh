@@ -11,10 +11,10 @@
 # compiler's helpers (libgcc) are not counted.
 #
 # Configurations: all-on (zl_config.h's defaults) and minimal (every
-# ZL_FEATURE_* 0: RGB565 or any format, flat and Gouraud, every depth
-# function, frame and scanline modes); on Cortex-M0+ also minimal-small, the
+# ZL_FEATURE_* 0: native RGB565, flat and Gouraud unlit, depth LESS or
+# LEQUAL, frame and scanline modes, no split frame); on Cortex-M0+ also minimal-small, the
 # minimal one without the speed-for-size paths (ZL_SMALL_TRIANGLE_SETUP=0,
-# ZL_FAST_SPANS=0, ZL_DRAW_CACHE_SLOTS=0: the same pixels, slower; on the
+# ZL_FAST_SPANS=0, ZL_FAST_PATHS=0, ZL_DRAW_CACHE_SLOTS=0: the same pixels, slower; on the
 # ATmega2560 the first two are already 0, where int has 16 bits). Targets: Cortex-M0+, Cortex-M4
 # (arm-none-eabi-gcc), rv32imc (riscv64-unknown-elf-gcc with picolibc's
 # headers), ATmega2560 (avr-gcc), each at -Os and -O2.
@@ -28,8 +28,9 @@ for tool in arm-none-eabi-gcc riscv64-unknown-elf-gcc avr-gcc; do
     command -v $tool >/dev/null || { echo "config-size.sh: $tool not found" >&2; exit 2; }
 done
 srcs=$(find "$root/core/src" -name '*.c' | sort)
-minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0"
-small="-DZL_SMALL_TRIANGLE_SETUP=0 -DZL_FAST_SPANS=0 -DZL_DRAW_CACHE_SLOTS=0"
+minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0
+ -DZL_FEATURE_LIGHTING=0 -DZL_FEATURE_OFFSET=0 -DZL_FEATURE_DEPTH_FUNCS=0 -DZL_FEATURE_FORMATS=0 -DZL_FEATURE_SPLIT=0"
+small="-DZL_SMALL_TRIANGLE_SETUP=0 -DZL_FAST_SPANS=0 -DZL_FAST_PATHS=0 -DZL_DRAW_CACHE_SLOTS=0"
 
 # flash PREFIX LD-EMULATION FLAGS... : .text + .rodata bytes the probe keeps of
 # the core (LD-EMULATION: ld's -m, or - for its default)

@@ -111,6 +111,28 @@
 #endif
 
 /*
+ * ZL_FAST_PATHS: 1 (the default) keeps the copies of the common paths that
+ * buy speed with flash: the 32-bit vertex transform (vx_fast) and set-up of
+ * cached flat triangles (setup_flat_32), frame mode's loops over the vertex
+ * cache for plain flat and Gouraud draws (draw_plain, draw_plain_gouraud),
+ * the RGB565 LESS / LEQUAL loops of flat rows and spans and of Gouraud
+ * lanes (rows_flat_565, span_flat_565 / _exact, lanes_fast), and scanline
+ * mode's row walks specialised for LESS and LEQUAL (render_row_less,
+ * _lequal). 0 sends those vertices, triangles, spans and rows to the
+ * general code: the same pixels (the *_fast_paths_off tests), slower: with
+ * the other knobs of README's minimal-small configuration, Cortex-M0 -O2
+ * (ZLINE_CONFIG="..." sh port/cortex-m/bench/measure-m0.sh, with and without
+ * ZL_FAST_PATHS=0) the fill scene takes 5.5 times the instructions, the
+ * bunny 1.7 times with the vertex cache and 1.3 times in scanline mode.
+ */
+#ifndef ZL_FAST_PATHS
+#define ZL_FAST_PATHS 1
+#endif
+#if ZL_FAST_PATHS != 0 && ZL_FAST_PATHS != 1
+#error "ZL_FAST_PATHS must be 0 or 1"
+#endif
+
+/*
  * Feature switches (issue 23): pay only for what you draw. Each is 1 (the
  * default: compiled in) or 0 (compiled out: the code that draws it is
  * unreachable, so the compiler and the linker's section garbage collection
@@ -132,11 +154,29 @@
  *                        of 28,104). Off, the plane goes through the
  *                        snapped vertices whatever the mapping (zline.h,
  *                        Pseudodepth); nothing returns ZL_ERR_UNSUPPORTED.
+ *   ZL_FEATURE_LIGHTING  the state's light (zl_state.light_on, ambient,
+ *                        light_dir): off, a state with light_on set is
+ *                        refused (zl_state_check)
+ *   ZL_FEATURE_OFFSET    polygon offset (zl_style.offset_factor,
+ *                        .offset_units; outlines are then drawn unmoved)
+ *   ZL_FEATURE_DEPTH_FUNCS  the depth functions beyond ZL_LESS and ZL_LEQUAL:
+ *                        off, zl_state.depth_func must be one of those two
+ *                        or ZL_ALWAYS (which costs nothing: the loops of
+ *                        depth_test 0 take it) when depth_test is set
+ *   ZL_FEATURE_FORMATS   the colour formats beyond ZL_FORMAT_RGB565 (native
+ *                        byte order): off, a target or frame of another
+ *                        format is refused (zl_init, zl_frame_begin; the
+ *                        visibility methods and the overlay, with pixel
+ *                        code of their own, keep every format)
+ *   ZL_FEATURE_SPLIT     a scanline frame split across two cores
+ *                        (zl_frame_split, zl_frame_prepare,
+ *                        zl_frame_config.parts = 2: refused when off)
  *
- * Off, a style that asks for the feature makes every draw and submission
- * with it return ZL_ERR_UNSUPPORTED (zl_style_check). Flat and Gouraud
- * triangles, every depth function, frame, band and scanline modes and the
- * visibility methods (their own API, linked only when called) stay.
+ * Off, a style (a state, a format) that asks for the feature makes every
+ * draw and submission with it return ZL_ERR_UNSUPPORTED (zl_style_check,
+ * zl_state_check). Flat and Gouraud triangles, frame, band and scanline
+ * modes and the visibility methods (their own API, linked only when
+ * called) stay.
  */
 #ifndef ZL_FEATURE_TEXTURES
 #define ZL_FEATURE_TEXTURES 1
@@ -153,9 +193,27 @@
 #ifndef ZL_FEATURE_EXACT_DEPTH
 #define ZL_FEATURE_EXACT_DEPTH 1
 #endif
+#ifndef ZL_FEATURE_LIGHTING
+#define ZL_FEATURE_LIGHTING 1
+#endif
+#ifndef ZL_FEATURE_OFFSET
+#define ZL_FEATURE_OFFSET 1
+#endif
+#ifndef ZL_FEATURE_DEPTH_FUNCS
+#define ZL_FEATURE_DEPTH_FUNCS 1
+#endif
+#ifndef ZL_FEATURE_FORMATS
+#define ZL_FEATURE_FORMATS 1
+#endif
+#ifndef ZL_FEATURE_SPLIT
+#define ZL_FEATURE_SPLIT 1
+#endif
 #if (ZL_FEATURE_TEXTURES != 0 && ZL_FEATURE_TEXTURES != 1) || (ZL_FEATURE_BLEND != 0 && ZL_FEATURE_BLEND != 1) || \
     (ZL_FEATURE_LINES != 0 && ZL_FEATURE_LINES != 1) || (ZL_FEATURE_OUTLINES != 0 && ZL_FEATURE_OUTLINES != 1) || \
-    (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1)
+    (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1) ||                                              \
+    (ZL_FEATURE_LIGHTING != 0 && ZL_FEATURE_LIGHTING != 1) || (ZL_FEATURE_OFFSET != 0 && ZL_FEATURE_OFFSET != 1) || \
+    (ZL_FEATURE_DEPTH_FUNCS != 0 && ZL_FEATURE_DEPTH_FUNCS != 1) ||                                              \
+    (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1) || (ZL_FEATURE_SPLIT != 0 && ZL_FEATURE_SPLIT != 1)
 #error "each ZL_FEATURE_* must be 0 or 1"
 #endif
 
@@ -166,7 +224,10 @@
  */
 #define ZL_FEATURES                                                                                       \
     ((unsigned)ZL_FEATURE_TEXTURES | ((unsigned)ZL_FEATURE_BLEND << 1) | ((unsigned)ZL_FEATURE_LINES << 2) | \
-     ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4))
+     ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4) |                      \
+     ((unsigned)ZL_FEATURE_LIGHTING << 5) | ((unsigned)ZL_FEATURE_OFFSET << 6) |                           \
+     ((unsigned)ZL_FEATURE_DEPTH_FUNCS << 7) | ((unsigned)ZL_FEATURE_FORMATS << 8) |                      \
+     ((unsigned)ZL_FEATURE_SPLIT << 9))
 
 /*
  * ZL_MESH_READ_FIXED(p), ZL_MESH_READ_U16(p), ZL_MESH_READ_U8(p): how the

@@ -360,7 +360,10 @@ typedef struct {
 void zl_state_default(zl_state *s);
 /* ZL_ERR_ARG when an enum field is out of range; ZL_ERR_RANGE when light_on
  * is set and a light_dir component is outside +-1.0, or when near_z and
- * far_z are not both 0 and not 0 < near_z < far_z. */
+ * far_z are not both 0 and not 0 < near_z < far_z; ZL_ERR_UNSUPPORTED for
+ * light_on set without ZL_FEATURE_LIGHTING, or (depth_test set) a
+ * depth_func other than LESS, LEQUAL and ALWAYS without
+ * ZL_FEATURE_DEPTH_FUNCS (zl_config.h). */
 zl_status zl_state_check(const zl_state *s);
 
 /* --------------------------------------------- smooth (per-vertex) lighting */
@@ -740,7 +743,9 @@ typedef struct {
 /* Defaults: fill both faces, points of 1 pixel, Bresenham, no offset, no
  * texture, screen-linear Gouraud, no blending (alpha 255). */
 void zl_style_default(zl_style *s);
-/* ZL_ERR_ARG for an unknown enum value, ZL_ERR_RANGE for a number outside its range. */
+/* ZL_ERR_ARG for an unknown enum value, ZL_ERR_RANGE for a number outside its
+ * range, ZL_ERR_UNSUPPORTED for a field asking for a feature compiled out
+ * (zl_config.h: textures, blending, polygon modes, offset). */
 zl_status zl_style_check(const zl_style *s);
 
 /* ------------------------------------------------------- frame mode */
@@ -801,7 +806,8 @@ typedef struct {
  * ZL_DRAW_CACHE_SLOTS it was built with (0: it has none). */
 size_t zl_draw_cache_bytes(void);
 
-/* Check the target and set the default state and style. */
+/* Check the target and set the default state and style (ZL_ERR_UNSUPPORTED
+ * for a format other than RGB565 without ZL_FEATURE_FORMATS, zl_config.h). */
 zl_status zl_init(zl_context *ctx, const zl_target *target);
 /* Clear colour (respecting the colour mask) and depth (respecting the
  * depth write mask), as glClear does. */
@@ -956,7 +962,8 @@ size_t zl_frame_bytes(const zl_frame_config *cfg);
 /* Start a frame in `work`: at least zl_frame_bytes(cfg) bytes, 8-byte aligned
  * (declare it as uint64_t work[(bytes + 7) / 8]; where uint64_t is aligned
  * to less, as on AVR, add __attribute__((aligned(8)))); ZL_ERR_ARG if
- * misaligned. */
+ * misaligned; ZL_ERR_UNSUPPORTED for a format other than RGB565 without
+ * ZL_FEATURE_FORMATS, or two parts without ZL_FEATURE_SPLIT (zl_config.h). */
 zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
                          zl_rgb clear_color, uint16_t clear_depth);
 /* Submit a mesh with its transform (NULL: pixel space) and state (copied).

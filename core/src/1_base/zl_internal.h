@@ -471,6 +471,12 @@ void zl_tri_set_planes(zl_active *t, zl_gouraud *g, const zl_wvert *a, const zl_
                        const zl_attr *z, const zl_attr *col, int wrap);
 /* Does the style need texture planes (a texture or perspective Gouraud)? */
 int zl_style_needs_planes(const zl_style *sty);
+/* zl_style_needs_planes, 0 when no feature that needs planes is compiled in
+ * (zl_config.h): then the callers' plane code is unreachable and goes. */
+static inline int zl_style_planes(const zl_style *sty)
+{
+    return (ZL_FEATURE_TEXTURES || ZL_FEATURE_BLEND) ? zl_style_needs_planes(sty) : 0;
+}
 /* zl_tri_classify's bounds and zl_tri_setup_rows' record of a flat triangle
  * from three cached vertices whose culling the caller settled, under state
  * st; colour and light are the caller's. 1: set up; 0: not in the target.

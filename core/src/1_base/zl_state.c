@@ -32,6 +32,10 @@ zl_status zl_state_check(const zl_state *s)
         s->shading > ZL_SHADE_GOURAUD || s->color_mask > ZL_MASK_RGB || s->depth_test > 1 ||
         s->depth_write > 1 || s->light_on > 1)
         return ZL_ERR_ARG;
+    if ((!ZL_FEATURE_LIGHTING && s->light_on) ||
+        (!ZL_FEATURE_DEPTH_FUNCS && s->depth_test && s->depth_func != ZL_LESS && s->depth_func != ZL_LEQUAL &&
+         s->depth_func != ZL_ALWAYS))
+        return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     /* A unit vector: components within +-1.0 keep the lighting dot product
      * (normal below 2^31 times light) far inside 64 bits. */
     if (s->light_on && (s->light_dir.x < -ZL_FX_ONE || s->light_dir.x > ZL_FX_ONE ||

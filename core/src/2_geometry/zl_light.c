@@ -200,7 +200,7 @@ static ZL_ALWAYS_INLINE void shade(const zl_source *s, uint32_t t, const uint16_
     unsigned i, k, n;
     uint32_t any = 0;
     zl_rgb c;
-    if (!s->state->light_on) {
+    if (!ZL_FEATURE_LIGHTING || !s->state->light_on) { /* off: light_on is refused (zl_state_check) */
         poly->flat = face_color(s, t);
         poly->light = 255;
         return;
@@ -234,6 +234,10 @@ void zl_light_prepare(const zl_state *st, int32_t lq[3])
     /* the dot product's sign flips with the winding of the front face:
      * flipping the light instead gives the same sum, once per draw */
     int32_t sign = st->front_face == ZL_FRONT_CW ? -1 : 1;
+    if (!ZL_FEATURE_LIGHTING) { /* compiled out (zl_config.h): nothing reads it */
+        lq[0] = lq[1] = lq[2] = 0;
+        return;
+    }
     lq[0] = sign * light_q14(st->light_dir.x);
     lq[1] = sign * light_q14(st->light_dir.y);
     lq[2] = sign * light_q14(st->light_dir.z);
@@ -243,7 +247,7 @@ uint16_t zl_tri_pixel565_lit(const zl_source *s, uint32_t t, const int32_t lq[3]
 {
     zl_rgb c = face_color(s, t);
     unsigned r = c.r, g = c.g, b = c.b;
-    if (s->state->light_on) {
+    if (ZL_FEATURE_LIGHTING && s->state->light_on) {
         unsigned i = face_intensity(s, &s->mesh->indices[t * 3u], lq);
         r = scale255(r, i);
         g = scale255(g, i);
@@ -260,7 +264,7 @@ void zl_tri_shade_lit(const zl_source *s, uint32_t t, zl_poly *poly, const int32
 void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly)
 {
     int32_t lq[3] = {0, 0, 0};
-    if (s->state->light_on) /* unlit: shade reads no light */
+    if (ZL_FEATURE_LIGHTING && s->state->light_on) /* unlit: shade reads no light */
         zl_light_prepare(s->state, lq);
     shade(s, t, &s->mesh->indices[t * 3u], poly, lq);
 }

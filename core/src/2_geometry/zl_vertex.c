@@ -662,6 +662,14 @@ zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_
             *c = bad;
         return ZL_ERR_RANGE;
     }
+    if (!ZL_FAST_PATHS) { /* (zl_config.h) every vertex by vx_cache, vx_fast's exact values */
+        for (; c != end; c++, p += 3) {
+            *c = vx_cache(&vs, p);
+            if (c->x == ZL_CACHE_INVALID)
+                st = ZL_ERR_RANGE;
+        }
+        return st;
+    }
     /* Two loops: vx_fast inlined once per depth mapping, no test a vertex. */
     if (vs.exact != NULL) {
         for (; c != end; c++, p += 3) {

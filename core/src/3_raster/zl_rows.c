@@ -472,9 +472,9 @@ void zl_tri_rows_flat(const zl_active *t, const zl_span_state *ss, uint8_t *colo
     if ((color == NULL && bpp != 0) || (depth == NULL && (ss->zwrite || ss->func != ZL_ALWAYS)))
         return; /* as in row_span */
     pack_color((zl_format)ss->format, t->rgb[0], t->rgb[1], t->rgb[2], pix);
-    if (color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && bpp == 2 && ss->zwrite &&
-        ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)color & 1u) == 0 && (color_stride & 1) == 0 &&
-        t->z.dx >= INT32_MIN && t->z.dx <= INT32_MAX) {
+    if (ZL_FAST_PATHS && color != NULL && depth != NULL && ss->format == ZL_FORMAT_RGB565 && bpp == 2 &&
+        ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)color & 1u) == 0 &&
+        (color_stride & 1) == 0 && t->z.dx >= INT32_MIN && t->z.dx <= INT32_MAX) { /* (off: zl_config.h) */
         if (ss->func == ZL_LESS) {
             rows_flat_565(t, ss, ZL_LESS, color, color_stride, depth, depth_stride, pix, (int32_t)t->z.dx);
             return;

@@ -312,6 +312,8 @@ static int poly_residuals(const zl_poly *poly, const zl_wvert *a, const zl_wvert
 {
     const zl_wvert *v[3];
     int k;
+    if (!ZL_FEATURE_EXACT_DEPTH) /* compiled out (zl_config.h): the exact plane's code goes */
+        return 0;
     if (poly == NULL || poly->clipped || poly->n != 3)
         return 0;
     v[0] = a;
@@ -599,7 +601,7 @@ void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const 
     pf.oy = (int64_t)pf.ay * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->y;
     pf.first = first;
     t->ax = pf.ax;
-    if (res == NULL || !depth_plane_wvert(t, v, a, b, res, &pf)) {
+    if (!ZL_FEATURE_EXACT_DEPTH || res == NULL || !depth_plane_wvert(t, v, a, b, res, &pf)) {
         plane_setup(&t->z, &pf, v[0]->z, v[1]->z, v[2]->z);
         t->zlo = v[0]->z;
         t->zhi = v[0]->z;

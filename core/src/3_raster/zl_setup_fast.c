@@ -195,7 +195,8 @@ static int setup_flat_32(zl_active *t, const zl_cached_vertex *a, const zl_cache
 int zl_tri_setup_flat(zl_active *t, const zl_cached_vertex *a, const zl_cached_vertex *b,
                       const zl_cached_vertex *c, const zl_state *st, uint16_t width, uint16_t height)
 {
-    int set = setup_flat_32(t, a, b, c, width, height);
+    /* without ZL_FAST_PATHS (zl_config.h) every triangle takes the general set-up: the same pixels */
+    int set = ZL_FAST_PATHS ? setup_flat_32(t, a, b, c, width, height) : -1;
     if (set >= 0)
         return set;
     {

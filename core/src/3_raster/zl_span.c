@@ -266,8 +266,8 @@ void zl_span_flat(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int32_
 {
     unsigned func = ss->func, bpp = ss->bpp;
     int32_t i;
-    if (bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 && ((uintptr_t)crow & 1u) == 0 &&
-        (func == ZL_LESS || func == ZL_LEQUAL)) {
+    if (ZL_FAST_PATHS && bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+        ((uintptr_t)crow & 1u) == 0 && (func == ZL_LESS || func == ZL_LEQUAL)) { /* (off: zl_config.h) */
         uint16_t pixel, *c16 = (uint16_t *)(void *)crow;
         int exact = stays_below(z, dz, n, 65536u << 14);
         memcpy(&pixel, pix, 2);
@@ -541,7 +541,7 @@ static void lanes_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow
             uint8_t pix[2];
             if (ss->zwrite)
                 zrow[i] = (uint16_t)d;
-            if (ss->format == ZL_FORMAT_RGB565_BE) {
+            if (ZL_FEATURE_FORMATS && ss->format == ZL_FORMAT_RGB565_BE) { /* off, RGB565 only */
                 pix[0] = (uint8_t)(v >> 8);
                 pix[1] = (uint8_t)v;
             } else {
@@ -575,7 +575,7 @@ static void gouraud_chunk(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow
     zl_lanes ln;
     if (!lanes_init(&ln, c, dc, n))
         span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
-    else if (zrow != NULL && lanes_fast_ok(ss, crow, zrow, n, z, dz))
+    else if (ZL_FAST_PATHS && zrow != NULL && lanes_fast_ok(ss, crow, zrow, n, z, dz)) /* (off: zl_config.h) */
         lanes_fast(ss->func, (uint16_t *)(void *)crow, zrow, n, z, dz, &ln);
     else
         lanes_generic(ss, crow, zrow, n, z, dz, &ln);

@@ -14,6 +14,8 @@
 /* Memory bytes of colour c in a format (2 or 3 of them). */
 static inline void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, uint8_t out[3])
 {
+    if (!ZL_FEATURE_FORMATS) /* compiled out (zl_config.h): RGB565 only (zl_init, zl_frame_begin) */
+        f = ZL_FORMAT_RGB565;
     if (f == ZL_FORMAT_RGB888) {
         out[0] = (uint8_t)r;
         out[1] = (uint8_t)g;
@@ -32,6 +34,8 @@ static inline void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, u
 
 static ZL_ALWAYS_INLINE int depth_pass(unsigned func, uint32_t d, uint32_t stored)
 {
+    if (!ZL_FEATURE_DEPTH_FUNCS) /* compiled out (zl_config.h): LESS, LEQUAL or ALWAYS (zl_state_check) */
+        return func == ZL_LESS ? d < stored : (func == ZL_LEQUAL ? d <= stored : 1);
     switch (func) {
     case ZL_NEVER:
         return 0;
@@ -240,7 +244,7 @@ static inline void put_pixel(uint8_t *p, unsigned bpp, const uint8_t *pix, const
 {
     p[0] = (uint8_t)((p[0] & keep[0]) | (pix[0] & (uint8_t)~keep[0]));
     p[1] = (uint8_t)((p[1] & keep[1]) | (pix[1] & (uint8_t)~keep[1]));
-    if (bpp == 3)
+    if (ZL_FEATURE_FORMATS && bpp == 3) /* off, RGB565 only */
         p[2] = (uint8_t)((p[2] & keep[2]) | (pix[2] & (uint8_t)~keep[2]));
 }
 

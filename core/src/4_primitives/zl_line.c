@@ -63,7 +63,8 @@ zl_status zl_style_check(const zl_style *s)
         return ZL_ERR_RANGE;
     if ((!ZL_FEATURE_TEXTURES && (s->texture != NULL || s->persp_gouraud)) ||
         (!ZL_FEATURE_BLEND && s->blend != ZL_BLEND_OFF) ||
-        (!ZL_FEATURE_LINES && (s->polygon_front != ZL_POLY_FILL || s->polygon_back != ZL_POLY_FILL)))
+        (!ZL_FEATURE_LINES && (s->polygon_front != ZL_POLY_FILL || s->polygon_back != ZL_POLY_FILL)) ||
+        (!ZL_FEATURE_OFFSET && (s->offset_factor != 0 || s->offset_units != 0)))
         return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     if (s->texture != NULL) {
         const zl_texture *t = s->texture;
@@ -406,7 +407,8 @@ static int tri_mode(const zl_source *s, const zl_style *sty, const zl_poly *poly
 
 static int uses_modes(const zl_style *sty)
 {
-    return sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL);
+    /* (compiled out with ZL_FEATURE_LINES: zl_style_check refuses the modes) */
+    return ZL_FEATURE_LINES && sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL);
 }
 
 unsigned zl_tri_pieces(const zl_source *s, const zl_style *sty, uint32_t tri, const zl_poly *poly)
@@ -510,14 +512,16 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
         t->rgb[2] = flat.b;
         if (poly->clipped) {
             zl_tri_orig_piece(s, sty, tri, poly, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], t, g, tp);
-            off = zl_tri_offset_plane(&t->z, sty);
+            off = ZL_FEATURE_OFFSET ? zl_tri_offset_plane(&t->z, sty) : 0; /* off: none (zl_style_check) */
         } else {
-            off = zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty);
+            off = ZL_FEATURE_OFFSET ? zl_tri_offset(&poly->v[0], &poly->v[k + 1], &poly->v[k + 2], sty) : 0;
         }
         if (off != 0)
             zl_tri_apply_offset(t, off);
         return 1;
     }
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): no line or point modes (zl_style_check) */
+        return 0;
     /* Line and point pieces: offset by the slope of the triangle's plane. */
     off = zl_tri_offset(&poly->v[0], &poly->v[plane], &poly->v[plane + 1], sty);
     {

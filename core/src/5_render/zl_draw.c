@@ -27,6 +27,8 @@ static zl_status check_target(const zl_target *t)
     bpp = zl_format_bytes((zl_format)t->format);
     if (bpp == 0)
         return ZL_ERR_ARG;
+    if (!ZL_FEATURE_FORMATS && t->format != ZL_FORMAT_RGB565)
+        return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     if (t->color != NULL) {
         if (t->color_stride < (int32_t)(t->width * bpp))
             return ZL_ERR_SIZE;
@@ -168,7 +170,7 @@ static ZL_NOINLINE void draw_pieces(const zl_context *ctx, const zl_source *src,
         zl_gouraud g;
         zl_texplanes tp;
         if (zl_tri_piece(src, &ctx->style, t, poly, k, &tri, &g, &tp))
-            draw_rows(ctx, &tri, &g, zl_style_needs_planes(&ctx->style) ? &tp : NULL, ss);
+            draw_rows(ctx, &tri, &g, zl_style_planes(&ctx->style) ? &tp : NULL, ss);
     }
 }
 
@@ -181,7 +183,7 @@ static int plain_flat(const zl_context *ctx)
     const zl_style *sty = &ctx->style;
     return ctx->state.shading == ZL_SHADE_FLAT && sty->polygon_front == ZL_POLY_FILL &&
            sty->polygon_back == ZL_POLY_FILL && sty->offset_factor == 0 && sty->offset_units == 0 &&
-           sty->toon_bands == 0 && !zl_style_needs_planes(sty);
+           sty->toon_bands == 0 && !zl_style_planes(sty);
 }
 
 /* Whether every triangle of a draw is a plain Gouraud fill with the vertex
@@ -193,7 +195,7 @@ static int plain_gouraud(const zl_context *ctx, const zl_mesh *mesh)
     const zl_style *sty = &ctx->style;
     return ctx->state.shading == ZL_SHADE_GOURAUD && !ctx->state.light_on && mesh->vertex_colors != NULL &&
            sty->polygon_front == ZL_POLY_FILL && sty->polygon_back == ZL_POLY_FILL && sty->offset_factor == 0 &&
-           sty->offset_units == 0 && sty->toon_bands == 0 && !zl_style_needs_planes(sty);
+           sty->offset_units == 0 && sty->toon_bands == 0 && !zl_style_planes(sty);
 }
 
 /* Triangle t of any draw through the general path: polygon (clipped when
@@ -506,7 +508,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
         return st;
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
                        (zl_format)ctx->target.format, ctx->target.width);
-    planes = zl_style_needs_planes(&ctx->style);
+    planes = zl_style_planes(&ctx->style);
 #if ZL_DRAW_CACHE_SLOTS > 0
     if (src.cache == NULL && draw_cache_usable(ctx)) {
         int flat = plain_flat(ctx);
@@ -518,7 +520,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
         }
     }
 #endif
-    if (src.cache != NULL && plain_flat(ctx)) {
+    if (ZL_FAST_PATHS && src.cache != NULL && plain_flat(ctx)) { /* (off: draw_general, the same pixels) */
         int cull_sign = culled_area_sign(&ctx->state);
         int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
         for (t = draw_plain(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;
@@ -526,7 +528,7 @@ zl_status zl_draw_mesh(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *mvp)
             draw_general(ctx, &src, t, &ss, 0);
         return ZL_OK;
     }
-    if (src.cache != NULL && plain_gouraud(ctx, mesh)) {
+    if (ZL_FAST_PATHS && src.cache != NULL && plain_gouraud(ctx, mesh)) {
         int cull_sign = culled_area_sign(&ctx->state);
         int tiny = zl_tiny_span_state(&ss, ctx->target.color, ctx->target.color_stride, ctx->target.depth);
         for (t = draw_plain_gouraud(ctx, &src, &ss, 0, cull_sign, tiny); t < mesh->triangle_count;
@@ -550,7 +552,7 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
         st = zl_check_mesh(mesh, mvp == NULL);
     if (st == ZL_OK)
         st = zl_check_outline(mesh, outline);
-    if (st != ZL_OK)
+    if (st != ZL_OK || !ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h): zl_check_outline said so */
         return st;
     source_init(&src, ctx, mesh, mvp);
     zl_span_state_init(&ss, &ctx->state, ctx->target.depth != NULL, ctx->target.color != NULL,
@@ -575,7 +577,7 @@ zl_status zl_draw_lines(zl_context *ctx, const zl_lines *lines, const zl_mat4 *m
         st = zl_check_lines(lines);
     if (st == ZL_OK) /* the transform limits (LIMITS in zline.h) */
         st = zl_check_positions(lines->positions, lines->vertex_count, mvp);
-    if (st != ZL_OK)
+    if (st != ZL_OK || !ZL_FEATURE_LINES) /* compiled out (zl_config.h): zl_check_lines said so */
         return st;
     zl_lines_mesh(lines, &m);
     src.mesh = &m;

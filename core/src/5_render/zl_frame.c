@@ -108,6 +108,8 @@ zl_status(zl_frame_begin)(zl_frame *f, const zl_frame_config *cfg, void *work, s
         return ZL_ERR_ARG;
     if (!zl_frame_layout(cfg, &l))
         return ZL_ERR_SIZE;
+    if ((!ZL_FEATURE_FORMATS && cfg->format != ZL_FORMAT_RGB565) || (!ZL_FEATURE_SPLIT && cfg->parts == 2))
+        return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     if (work_bytes < l.total)
         return ZL_ERR_SIZE;
     memset(f, 0, sizeof *f);
@@ -185,7 +187,7 @@ static unsigned mesh_flags(const zl_frame *f, const zl_frame_mesh *m, const zl_s
                  ss->keep[1] == 0 && (ss->func == ZL_LESS || ss->func == ZL_LEQUAL);
     if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL ||
                         sty->offset_factor != 0 || sty->offset_units != 0 || sty->toon_bands != 0 ||
-                        zl_style_needs_planes(sty)))
+                        zl_style_planes(sty)))
         return 0;
     /* MESH_GOURAUD565: frame mode's plain_gouraud (zl_draw.c), without style
      * records (render_row_plain's walks) and with a Gouraud slot a record */
@@ -245,7 +247,7 @@ static zl_status add_record(zl_frame *f, const zl_mesh *mesh, const zl_mat4 *mvp
         return ZL_ERR_CAPACITY;
     if (!f->cfg.styled && (lines != NULL || outline != NULL || (style != NULL && !is_default_style(style))))
         return ZL_ERR_CAPACITY;
-    if (!f->cfg.textured && zl_style_needs_planes(style))
+    if (!f->cfg.textured && zl_style_planes(style))
         return ZL_ERR_CAPACITY;
     if (f->mesh_count >= f->cfg.max_meshes || f->vertex_count + mesh->vertex_count > f->cfg.max_vertices ||
         f->triangle_total + mesh->triangle_count > 65535u)
@@ -286,6 +288,8 @@ zl_status zl_frame_add_lines(zl_frame *f, const zl_lines *lines, const zl_mat4 *
     zl_mesh m;
     zl_status st = zl_check_lines(lines);
     zl_style d;
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): zl_check_lines said so, the rest goes */
+        return st;
     if (st == ZL_OK) /* the transform limits (LIMITS in zline.h) */
         st = zl_check_positions(lines->positions, lines->vertex_count, mvp);
     if (st != ZL_OK)
@@ -306,7 +310,7 @@ zl_status zl_frame_add_outlines(zl_frame *f, const zl_mesh *mesh, const zl_mat4 
     zl_style d;
     if (st == ZL_OK)
         st = zl_check_outline(mesh, outline);
-    if (st != ZL_OK)
+    if (st != ZL_OK || !ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h): zl_check_outline said so */
         return st;
     if (outline->edge_count > 65535u)
         return ZL_ERR_CAPACITY;

@@ -37,7 +37,7 @@ static ZL_NOINLINE unsigned prim_rows(const zl_frame *f, unsigned mi, uint32_t t
     *first = INT16_MAX;
     *end = 0;
     source_of(f, m, &s);
-    if (sty != NULL && ext_of(f, mi)->is_lines) {
+    if ((ZL_FEATURE_LINES || ZL_FEATURE_OUTLINES) && sty != NULL && ext_of(f, mi)->is_lines) {
         zl_active rec;
         if (!prim_record(f, mi, &s, t, &rec))
             return 0;
@@ -47,7 +47,7 @@ static ZL_NOINLINE unsigned prim_rows(const zl_frame *f, unsigned mi, uint32_t t
     }
     if (!zl_tri_polygon_geom(&s, sty, t, &poly))
         return 0;
-    if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL)) {
+    if (ZL_FEATURE_LINES && sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL)) {
         poly.light = 255; /* the colour does not matter for the rows */
         poly.flat.r = poly.flat.g = poly.flat.b = 0;
         n = zl_tri_pieces(&s, sty, t, &poly);

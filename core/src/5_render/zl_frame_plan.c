@@ -71,7 +71,7 @@ static ZL_ALWAYS_INLINE void note_rows(zl_frame *f, plan_pass *p, uint32_t id, i
 /* note_rows for a part of a split frame (p's rows only) or a whole one. */
 static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_t first, int32_t end, unsigned pieces)
 {
-    note_rows(f, p, id, first, end, pieces, f->part != 0);
+    note_rows(f, p, id, first, end, pieces, ZL_FEATURE_SPLIT && f->part != 0);
 }
 
 /* Lines and outline records: one record per primitive. Out of line, like the
@@ -80,6 +80,8 @@ static ZL_NOINLINE void classify_lines(zl_frame *f, plan_pass *p, unsigned mi, c
 {
     const zl_frame_mesh *m = &f->meshes[mi];
     uint32_t t;
+    if (!ZL_FEATURE_LINES && !ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h): no such records */
+        return;
     for (t = 0; t < m->mesh.triangle_count; t++) {
         zl_active rec;
         if (prim_record(f, mi, s, t, &rec))
@@ -93,6 +95,8 @@ static ZL_NOINLINE void classify_pieces(zl_frame *f, plan_pass *p, const zl_fram
                                         const zl_style *sty)
 {
     uint32_t t;
+    if (!ZL_FEATURE_LINES) /* compiled out (zl_config.h): no line or point modes (zl_style_check) */
+        return;
     for (t = 0; t < m->mesh.triangle_count; t++) {
         zl_poly poly;
         unsigned k, n, pieces = 0;
@@ -576,7 +580,7 @@ zl_status zl_frame_plan(zl_frame *f)
 {
     layout l;
     uint8_t *pool;
-    int window = f->part != 0; /* a part of a split frame: its rows only */
+    int window = ZL_FEATURE_SPLIT && f->part != 0; /* a part of a split frame: its rows only */
     uint32_t running = 0, start = 0, peak = 0, slot, visible;
     uint16_t h = f->cfg.height, j;
     size_t diff_bytes = ALIGN8(((size_t)h + 1) * sizeof(int32_t));

@@ -187,7 +187,7 @@ static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
     if (!lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly, 0))
         return;
     if (!lines) {
-        if (!(zl_style_needs_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
+        if (!(zl_style_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
                                          : zl_tri_polygon_geom(&s, sty, t, poly)))
             return;
         zl_tri_shade(&s, t, poly);
@@ -250,7 +250,7 @@ static ZL_NOINLINE void render_row_styled(zl_frame *f, uint16_t y, uint16_t i, u
         ss = &f->meshes[a->mesh].span;
         if (a->kind != ZL_KIND_TRI)
             more = zl_prim_row(a, ss, crow, zrow);
-        else if (f->tex != NULL && zl_style_needs_planes(sty))
+        else if (f->tex != NULL && zl_style_planes(sty))
             more = zl_tri_row_ex(a, gouraud_of(f, slot), tex_of(f, slot), sty, ss, crow, zrow);
         else
             more = zl_tri_row(a, gouraud_of(f, slot), ss, crow, zrow);
@@ -273,7 +273,7 @@ static ZL_NOINLINE void activate_plain(zl_frame *f, uint16_t id, uint16_t *link)
     source_of(f, m, &s);
     if ((m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, &poly, (m->flags & MESH_ROW565) != 0))
         return;
-    if ((m->flags & MESH_GOURAUD565) && activate_tiny_gouraud(f, mi, &s, t, link))
+    if (ZL_SMALL_TRIANGLE_SETUP && (m->flags & MESH_GOURAUD565) && activate_tiny_gouraud(f, mi, &s, t, link))
         return;
     if (!zl_tri_polygon_geom(&s, NULL, t, &poly))
         return;
@@ -453,8 +453,8 @@ static ZL_ALWAYS_INLINE void rows_walk(zl_frame *f, uint16_t y, uint16_t i, uint
             continue;
         }
         m = uniform ? &meshes[0] : &meshes[a->mesh];
-        if (a->kind == ZL_KIND_TINY || (!uniform && a->kind == ZL_KIND_TINY_GOURAUD)) {
-            /* only in MESH_ROW565 (MESH_GOURAUD565) meshes */
+        if (ZL_SMALL_TRIANGLE_SETUP && (a->kind == ZL_KIND_TINY || (!uniform && a->kind == ZL_KIND_TINY_GOURAUD))) {
+            /* only in MESH_ROW565 (MESH_GOURAUD565) meshes; never without the small set-up (zl_config.h) */
             int32_t x0, x1;
 #if ZL_MUL32_ONLY
             { /* tiny_cols with the walked columns (tiny_walk_start) */
@@ -538,7 +538,7 @@ static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, 
         if (f->meshes[mi].span.func != func)
             flags = 0;
     }
-    if (flags == 0)
+    if (flags == 0 || !ZL_FAST_PATHS) /* (the LESS and LEQUAL copies: ZL_FAST_PATHS, zl_config.h) */
         render_row_plain(f, y, i, end, crow, zrow);
     else if (func == ZL_LESS)
         render_row_less(f, y, i, end, crow, zrow);
@@ -695,7 +695,7 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
         if (st != ZL_OK)
             return st;
         f->planned = 1;
-        if (f->next_row != 0) /* the second part of a split frame */
+        if (ZL_FEATURE_SPLIT && f->next_row != 0) /* the second part of a split frame */
             catch_up(f);
     }
     if (f->next_row >= f->end_row)

@@ -71,6 +71,8 @@ zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_
 {
     layout l;
     uint8_t *w = work;
+    if (!ZL_FEATURE_SPLIT) /* compiled out (zl_config.h) */
+        return ZL_ERR_UNSUPPORTED;
     if (f == NULL || second == NULL || work == NULL || second == f || ((uintptr_t)work & 7u) != 0)
         return ZL_ERR_ARG;
     if (f->depth_band == NULL || f->planned || f->over || f->part != 0 || !zl_frame_layout(&f->cfg, &l))
@@ -106,6 +108,8 @@ zl_status zl_frame_prepare(zl_frame *f)
 {
     uint32_t half, from, to;
     uint16_t mi;
+    if (!ZL_FEATURE_SPLIT) /* compiled out (zl_config.h) */
+        return ZL_ERR_UNSUPPORTED;
     if (f == NULL || f->part == 0 || f->prepared || f->planned)
         return ZL_ERR_ARG;
     half = f->vertex_count / 2u;
