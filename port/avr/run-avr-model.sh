@@ -41,11 +41,12 @@ sed -e '1i #include <avr/pgmspace.h>' \
     { echo "$name: torus_mesh.c's positions and indices not found to place in flash"; exit 1; }
 # As the Arduino core compiles a sketch: -Os, LTO, section garbage
 # collection; SCENE_QEMU_DATA_PRELOAD: avr_board.h's QEMU 7.2 work-arounds.
-# The minimal configuration (zl_config.h's feature switches, issue 23): flat
-# and Gouraud triangles, depth through the snapped vertices (its 8-byte cached
-# vertices): what the scene draws, which uses the default depth mapping.
-avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w \
-    -DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0 \
+# The minimal configuration (core/config/minimal.txt, issue 23): lit flat and
+# Gouraud triangles, RGB565 (big-endian, as panels take it), depth through the
+# snapped vertices (its 8-byte cached vertices): what the scene draws, which
+# uses the default depth mapping.
+minimal=$(sed -n 's/^\(ZL_[A-Z0-9_]*=[0-9]*\).*/-D\1/p' "$top/core/config/minimal.txt" | tr '\n' ' ')
+avr-gcc -mmcu=atmega2560 -DF_CPU=16000000UL -DSCENE_QEMU_DATA_PRELOAD -Os -std=c99 -w $minimal \
     -DZL_CONFIG_HEADER='"zl_avr_flash.h"' \
     -ffunction-sections -fdata-sections -flto \
     -I"$top/core/include" -I"$top/port/avr" -I"$work" \

@@ -5,8 +5,8 @@
 # once, each avr_test_* builds one test against it and runs it.
 #
 #   port/avr/run-avr-test.sh lib WORK CONFIG
-#       compile the core (CONFIG: "minimal", zl_config.h's feature switches
-#       all off, or "all", every feature on), tests/unity and tests/support
+#       compile the core (CONFIG: "minimal", the switches of
+#       core/config/minimal.txt off, or "all", every feature on), tests/unity and tests/support
 #       with avr-gcc into WORK/CONFIG/libzt.a
 #   port/avr/run-avr-test.sh run WORK CONFIG TEST ARENA [CFLAGS...]
 #       compile tests/TEST.c with -Dmain=avr_test_main, the project's
@@ -31,7 +31,7 @@ for tool in avr-gcc avr-ar avr-objcopy avr-objdump avr-size qemu-system-avr; do
         { echo "avr suite: skipped, $tool not found (tools/setup-debian.sh installs it)"; exit 77; }
 done
 case $config in
-minimal) features="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0" ;;
+minimal) features=$(sed -n 's/^\(ZL_[A-Z0-9_]*=[0-9]*\).*/-D\1/p' "$top/core/config/minimal.txt" | tr '\n' ' ') ;;
 all) features= ;;
 *) echo "unknown configuration '$config' (minimal or all)" >&2; exit 2 ;;
 esac
@@ -70,8 +70,9 @@ run_test() {
     test=$1 arena=$2
     shift 2
     name=avr_$test
+    [ "$config" = all ] || name=${name}_$config
     [ -f "$lib/libzt.a" ] || { echo "$name: $lib/libzt.a missing (CTest's avr_lib builds it)"; exit 1; }
-    dir=$work/$test
+    dir=$lib/$test
     mkdir -p "$dir"
     # shellcheck disable=SC2086
     avr-gcc $cflags $warnings -DZT_GUARD_ARENA_BYTES="$arena"u -c "$top/tests/support/zt_guard.c" -o "$dir/zt_guard.o"

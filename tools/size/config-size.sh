@@ -28,8 +28,7 @@ for tool in arm-none-eabi-gcc riscv64-unknown-elf-gcc avr-gcc; do
     command -v $tool >/dev/null || { echo "config-size.sh: $tool not found" >&2; exit 2; }
 done
 srcs=$(find "$root/core/src" -name '*.c' | sort)
-minimal="-DZL_FEATURE_TEXTURES=0 -DZL_FEATURE_BLEND=0 -DZL_FEATURE_LINES=0 -DZL_FEATURE_OUTLINES=0 -DZL_FEATURE_EXACT_DEPTH=0
- -DZL_FEATURE_LIGHTING=0 -DZL_FEATURE_OFFSET=0 -DZL_FEATURE_DEPTH_FUNCS=0 -DZL_FEATURE_FORMATS=0 -DZL_FEATURE_SPLIT=0"
+minimal=$(sed -n 's/^\(ZL_[A-Z0-9_]*=[0-9]*\).*/-D\1/p' "$root/core/config/minimal.txt" | tr '\n' ' ')
 small="-DZL_SMALL_TRIANGLE_SETUP=0 -DZL_FAST_SPANS=0 -DZL_FAST_PATHS=0 -DZL_DRAW_CACHE_SLOTS=0"
 
 # flash PREFIX LD-EMULATION FLAGS... : .text + .rodata bytes the probe keeps of

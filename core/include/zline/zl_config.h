@@ -163,9 +163,10 @@
  *                        off, zl_state.depth_func must be one of those two
  *                        or ZL_ALWAYS (which costs nothing: the loops of
  *                        depth_test 0 take it) when depth_test is set
- *   ZL_FEATURE_FORMATS   the colour formats beyond ZL_FORMAT_RGB565 (native
- *                        byte order): off, a target or frame of another
- *                        format is refused (zl_init, zl_frame_begin; the
+ *   ZL_FEATURE_FORMATS   the colour formats beyond RGB565 (ZL_FORMAT_RGB565
+ *                        and _RGB565_BE, what panels take, stay): off, an
+ *                        RGB888 target or frame is refused (zl_init,
+ *                        zl_frame_begin; the
  *                        visibility methods and the overlay, with pixel
  *                        code of their own, keep every format)
  *   ZL_FEATURE_SPLIT     a scanline frame split across two cores

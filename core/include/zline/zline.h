@@ -807,7 +807,7 @@ typedef struct {
 size_t zl_draw_cache_bytes(void);
 
 /* Check the target and set the default state and style (ZL_ERR_UNSUPPORTED
- * for a format other than RGB565 without ZL_FEATURE_FORMATS, zl_config.h). */
+ * for RGB888 without ZL_FEATURE_FORMATS, zl_config.h). */
 zl_status zl_init(zl_context *ctx, const zl_target *target);
 /* Clear colour (respecting the colour mask) and depth (respecting the
  * depth write mask), as glClear does. */
@@ -962,8 +962,7 @@ size_t zl_frame_bytes(const zl_frame_config *cfg);
 /* Start a frame in `work`: at least zl_frame_bytes(cfg) bytes, 8-byte aligned
  * (declare it as uint64_t work[(bytes + 7) / 8]; where uint64_t is aligned
  * to less, as on AVR, add __attribute__((aligned(8)))); ZL_ERR_ARG if
- * misaligned; ZL_ERR_UNSUPPORTED for a format other than RGB565 without
- * ZL_FEATURE_FORMATS, or two parts without ZL_FEATURE_SPLIT (zl_config.h). */
+ * misaligned; ZL_ERR_UNSUPPORTED for RGB888 without ZL_FEATURE_FORMATS, or two parts without ZL_FEATURE_SPLIT (zl_config.h). */
 zl_status zl_frame_begin(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
                          zl_rgb clear_color, uint16_t clear_depth);
 /* Submit a mesh with its transform (NULL: pixel space) and state (copied).

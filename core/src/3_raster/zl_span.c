@@ -541,7 +541,7 @@ static void lanes_generic(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow
             uint8_t pix[2];
             if (ss->zwrite)
                 zrow[i] = (uint16_t)d;
-            if (ZL_FEATURE_FORMATS && ss->format == ZL_FORMAT_RGB565_BE) { /* off, RGB565 only */
+            if (ss->format == ZL_FORMAT_RGB565_BE) {
                 pix[0] = (uint8_t)(v >> 8);
                 pix[1] = (uint8_t)v;
             } else {

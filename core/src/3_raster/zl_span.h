@@ -14,9 +14,7 @@
 /* Memory bytes of colour c in a format (2 or 3 of them). */
 static inline void pack_color(zl_format f, unsigned r, unsigned g, unsigned b, uint8_t out[3])
 {
-    if (!ZL_FEATURE_FORMATS) /* compiled out (zl_config.h): RGB565 only (zl_init, zl_frame_begin) */
-        f = ZL_FORMAT_RGB565;
-    if (f == ZL_FORMAT_RGB888) {
+    if (ZL_FEATURE_FORMATS && f == ZL_FORMAT_RGB888) { /* off, RGB565 only (zl_init, zl_frame_begin) */
         out[0] = (uint8_t)r;
         out[1] = (uint8_t)g;
         out[2] = (uint8_t)b;

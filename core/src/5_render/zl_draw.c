@@ -27,7 +27,7 @@ static zl_status check_target(const zl_target *t)
     bpp = zl_format_bytes((zl_format)t->format);
     if (bpp == 0)
         return ZL_ERR_ARG;
-    if (!ZL_FEATURE_FORMATS && t->format != ZL_FORMAT_RGB565)
+    if (!ZL_FEATURE_FORMATS && t->format == ZL_FORMAT_RGB888)
         return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     if (t->color != NULL) {
         if (t->color_stride < (int32_t)(t->width * bpp))

@@ -108,7 +108,7 @@ zl_status(zl_frame_begin)(zl_frame *f, const zl_frame_config *cfg, void *work, s
         return ZL_ERR_ARG;
     if (!zl_frame_layout(cfg, &l))
         return ZL_ERR_SIZE;
-    if ((!ZL_FEATURE_FORMATS && cfg->format != ZL_FORMAT_RGB565) || (!ZL_FEATURE_SPLIT && cfg->parts == 2))
+    if ((!ZL_FEATURE_FORMATS && cfg->format == ZL_FORMAT_RGB888) || (!ZL_FEATURE_SPLIT && cfg->parts == 2))
         return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
     if (work_bytes < l.total)
         return ZL_ERR_SIZE;
