@@ -78,10 +78,11 @@ static ZL_ALWAYS_INLINE void note(zl_frame *f, plan_pass *p, uint32_t id, int32_
  * next one, so its record is not on the stack of the clipping path. */
 static ZL_NOINLINE void classify_lines(zl_frame *f, plan_pass *p, unsigned mi, const zl_source *s)
 {
-    const zl_frame_mesh *m = &f->meshes[mi];
+    const zl_frame_mesh *m;
     uint32_t t;
-    if (!ZL_FEATURE_LINES && !ZL_FEATURE_OUTLINES) /* compiled out (zl_config.h): no such records */
+    if (!(ZL_FEATURE_LINES || ZL_FEATURE_OUTLINES)) /* compiled out (zl_config.h): no such records */
         return;
+    m = &f->meshes[mi];
     for (t = 0; t < m->mesh.triangle_count; t++) {
         zl_active rec;
         if (prim_record(f, mi, s, t, &rec))
