@@ -10,12 +10,15 @@
 # needed); the probe's own sections are subtracted. memset/memcpy and the
 # compiler's helpers (libgcc) are not counted.
 #
-# Configurations: all-on (zl_config.h's defaults) and minimal (every
-# ZL_FEATURE_* 0: native RGB565, flat and Gouraud unlit, depth LESS or
-# LEQUAL, frame and scanline modes, no split frame); on Cortex-M0+ also minimal-small, the
-# minimal one without the speed-for-size paths (ZL_SMALL_TRIANGLE_SETUP=0,
-# ZL_FAST_SPANS=0, ZL_FAST_PATHS=0, ZL_DRAW_CACHE_SLOTS=0: the same pixels, slower; on the
-# ATmega2560 the first two are already 0, where int has 16 bits). Targets: Cortex-M0+, Cortex-M4
+# Configurations: all-on (zl_config.h's defaults) and minimal
+# (core/config/minimal.txt: lit flat and Gouraud triangles, RGB565, depth
+# LESS or LEQUAL, frame and scanline modes, no split frame); on Cortex-M0+
+# also minimal-small, the minimal one without the speed-for-size paths
+# (ZL_SMALL_TRIANGLE_SETUP=0, ZL_FAST_SPANS=0, ZL_FAST_PATHS=0,
+# ZL_DRAW_CACHE_SLOTS=0: the same pixels, slower; on the ATmega2560 the
+# first two are already 0, where int has 16 bits), and its rows -frame and
+# -scanline: a firmware that draws in that mode only (the same core, the
+# probe without the other mode's calls). Targets: Cortex-M0+, Cortex-M4
 # (arm-none-eabi-gcc), rv32imc (riscv64-unknown-elf-gcc with picolibc's
 # headers), ATmega2560 (avr-gcc), each at -Os and -O2.
 #
@@ -31,14 +34,20 @@ srcs=$(find "$root/core/src" -name '*.c' | sort)
 minimal=$(sed -n 's/^\(ZL_[A-Z0-9_]*=[0-9]*\).*/-D\1/p' "$root/core/config/minimal.txt" | tr '\n' ' ')
 small="-DZL_SMALL_TRIANGLE_SETUP=0 -DZL_FAST_SPANS=0 -DZL_FAST_PATHS=0 -DZL_DRAW_CACHE_SLOTS=0"
 
-# flash PREFIX LD-EMULATION FLAGS... : .text + .rodata bytes the probe keeps of
-# the core (LD-EMULATION: ld's -m, or - for its default)
+# core_objects PREFIX FLAGS... : every core/src file compiled into $work/obj/core
+core_objects() {
+    prefix=$1; shift
+    rm -rf "$work/obj" && mkdir -p "$work/obj/core"
+    (cd "$work/obj/core" && "${prefix}gcc" "$@" -std=c99 -ffunction-sections -fdata-sections -I"$root/core/include" -c $srcs)
+}
+# flash PREFIX LD-EMULATION PROBE-DEFINES FLAGS... : .text + .rodata bytes the
+# probe (compiled with FLAGS and PROBE-DEFINES) keeps of core_objects' core
+# (LD-EMULATION: ld's -m, or - for its default)
 flash() {
-    prefix=$1; emulation=$2; shift 2
+    prefix=$1; emulation=$2; probe_defines=$3; shift 3
     dir=$work/obj
-    rm -rf "$dir" && mkdir -p "$dir/core"
-    (cd "$dir/core" && "${prefix}gcc" "$@" -std=c99 -ffunction-sections -fdata-sections -I"$root/core/include" -c $srcs)
-    "${prefix}gcc" "$@" -std=c99 -ffunction-sections -fdata-sections -I"$root/core/include" \
+    # shellcheck disable=SC2086
+    "${prefix}gcc" "$@" $probe_defines -std=c99 -ffunction-sections -fdata-sections -I"$root/core/include" \
         -c "$root/tools/size/size_probe.c" -o "$dir/probe.o"
     if [ "$prefix" = avr- ]; then # avr-ld has no relocatable link: a full one, the core's share from its map
         avr-gcc "$@" -nostartfiles -Wl,--gc-sections -Wl,-e,zl_size_probe -Wl,-Map,"$dir/fw.map" \
@@ -84,9 +93,29 @@ while read -r name prefix emulation flags; do
         minimal) extra=$minimal ;;
         minimal-small) extra="$minimal $small" ;;
         esac
-        os=$(flash "$prefix" "$emulation" $flags -Os $extra)
-        o2=$(flash "$prefix" "$emulation" $flags -O2 $extra)
-        echo "| $config | $name | $os | $(kb "$os") | $o2 | $(kb "$o2") |"
+        # minimal-small: also a firmware that draws in one mode only (the
+        # same core objects, a probe without the other mode's calls)
+        rows=$config
+        [ "$config" = minimal-small ] && rows="$config $config-frame $config-scanline"
+        for opt in -Os -O2; do
+            core_objects "$prefix" $flags $opt $extra
+            for row in $rows; do
+                case $row in
+                *-frame) defines=-DZL_SIZE_PROBE_SCANLINE=0 ;;
+                *-scanline) defines=-DZL_SIZE_PROBE_FRAME=0 ;;
+                *) defines= ;;
+                esac
+                bytes=$(flash "$prefix" "$emulation" "$defines" $flags $opt $extra)
+                key=$(echo "$row" | tr '-' '_')
+                eval "bytes_${key}_${opt#-}=$bytes"
+            done
+        done
+        for row in $rows; do
+            key=$(echo "$row" | tr '-' '_')
+            eval "os=\$bytes_${key}_Os o2=\$bytes_${key}_O2"
+            # shellcheck disable=SC2154
+            echo "| $row | $name | $os | $(kb "$os") | $o2 | $(kb "$o2") |"
+        done
     done
 done <<EOF2
 Cortex-M0+ arm-none-eabi- - -mcpu=cortex-m0plus -mthumb

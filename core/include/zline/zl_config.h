@@ -112,18 +112,35 @@
 
 /*
  * ZL_FAST_PATHS: 1 (the default) keeps the copies of the common paths that
- * buy speed with flash: the 32-bit vertex transform (vx_fast) and set-up of
- * cached flat triangles (setup_flat_32), frame mode's loops over the vertex
- * cache for plain flat and Gouraud draws (draw_plain, draw_plain_gouraud),
- * the RGB565 LESS / LEQUAL loops of flat rows and spans and of Gouraud
- * lanes (rows_flat_565, span_flat_565 / _exact, lanes_fast), and scanline
- * mode's row walks specialised for LESS and LEQUAL (render_row_less,
- * _lequal). 0 sends those vertices, triangles, spans and rows to the
- * general code: the same pixels (the *_fast_paths_off tests), slower: with
- * the other knobs of README's minimal-small configuration, Cortex-M0 -O2
+ * buy speed with flash:
+ * - vertices: the 32-bit transform (vx_fast) and the prepared one
+ *   (vx_cache) beside the definition (cache_vertex_generic), the bound
+ *   that spares zl_check_positions a transform a vertex, the 32-bit face
+ *   normal beside the 64-bit one, a copy of the clip-plane distance in
+ *   each file that clips, a second copy of the face shading;
+ * - set-up: cached flat triangles in 32 bits (setup_flat_32), attribute
+ *   planes of small triangles in 32 bits (plane_fast) and their divisions
+ *   by 64-by-32 reciprocals (muldiv_pow2);
+ * - frame mode: the loops over the vertex cache for plain flat and Gouraud
+ *   draws (draw_plain, draw_plain_gouraud), the all-rows loop of flat
+ *   triangles (zl_tri_rows_flat);
+ * - spans: the RGB565 LESS / LEQUAL loops of flat rows and spans
+ *   (rows_flat_565, span_flat_565 / _exact) and the packed Gouraud lanes
+ *   (lanes_fast, lanes_generic);
+ * - scanline mode: planning's inlined classification on the vertex cache
+ *   and its bit array of visible triangles (classify_fill_may_mark,
+ *   place_fill_seen), the row walks for LESS, LEQUAL and unstyled meshes
+ *   (render_row_less, _lequal, _plain, activate_plain).
+ * 0 sends those vertices, triangles, spans and rows to the general code:
+ * the same pixels (the *_fast_paths_off tests), slower. With the other
+ * knobs of README's minimal-small configuration, Cortex-M0 -O2
  * (ZLINE_CONFIG="..." sh port/cortex-m/bench/measure-m0.sh, with and without
- * ZL_FAST_PATHS=0) the fill scene takes 5.5 times the instructions, the
- * bunny 1.7 times with the vertex cache and 1.3 times in scanline mode.
+ * ZL_FAST_PATHS=0): the fill scene takes 5.6 times the instructions, the
+ * bunny 2.4 times with the vertex cache and 2.1 times in scanline mode.
+ * (It was 1.7 and 1.3 times when 0 kept the prepared vertex transform, the
+ * 64-by-32 divisions, the cached classification inlined, the unstyled row
+ * walk, the Gouraud lanes and the 32-bit planes and normals: dropping them
+ * took the minimal-small-frame row of README's flash table within 16 KB.)
  */
 #ifndef ZL_FAST_PATHS
 #define ZL_FAST_PATHS 1

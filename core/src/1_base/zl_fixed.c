@@ -8,7 +8,8 @@
 /*
  * The tables below in flash on AVR: avr-gcc copies const data to SRAM (a
  * separate address space) unless it is placed in program memory and read
- * with LPM, and their 1,284 bytes are a sixth of an ATmega2560's 8 KB
+ * with LPM, and their 768 bytes (1,284 before the sine table took 16-bit
+ * entries) are a tenth of an ATmega2560's 8 KB
  * (port/avr). avr-libc's PROGMEM and pgm_read_* do that; ZL_NO_PROGMEM
  * keeps them in SRAM. Elsewhere these are plain const arrays and reads.
  */
@@ -16,11 +17,11 @@
 #include <avr/pgmspace.h>
 #define ZL_TABLE PROGMEM
 #define TABLE_U8(t, i) pgm_read_byte(&(t)[i])
-#define TABLE_S32(t, i) ((int32_t)pgm_read_dword(&(t)[i]))
+#define TABLE_U16(t, i) pgm_read_word(&(t)[i])
 #else
 #define ZL_TABLE
 #define TABLE_U8(t, i) ((t)[i])
-#define TABLE_S32(t, i) ((t)[i])
+#define TABLE_U16(t, i) ((t)[i])
 #endif
 
 zl_status zl_fx_mul_checked(zl_fixed a, zl_fixed b, zl_fixed *out)
@@ -214,8 +215,11 @@ zl_fixed zl_fx_sqrt(zl_fixed a)
     return (zl_fixed)zl_isqrt64((uint64_t)a << 16);
 }
 
-/* sin(i * quarter turn / 256) in Q16.16, i = 0..256 (generated, rounded). */
-static const int32_t sin_quarter[257] ZL_TABLE = {
+/* sin(i * quarter turn / 256) in Q16.16, i = 0..255 (generated, rounded);
+ * i = 256 is 1.0 (SIN_QUARTER_END). Every entry below it fits 16 bits, so
+ * the table takes 512 bytes of flash instead of 1,028 as int32_t. */
+#define SIN_QUARTER_END 65536
+static const uint16_t sin_quarter[256] ZL_TABLE = {
     0, 402, 804, 1206, 1608, 2010, 2412, 2814,
     3216, 3617, 4019, 4420, 4821, 5222, 5623, 6023,
     6424, 6824, 7224, 7623, 8022, 8421, 8820, 9218,
@@ -248,7 +252,7 @@ static const int32_t sin_quarter[257] ZL_TABLE = {
     64827, 64884, 64940, 64993, 65043, 65091, 65137, 65180,
     65220, 65259, 65294, 65328, 65358, 65387, 65413, 65436,
     65457, 65476, 65492, 65505, 65516, 65525, 65531, 65535,
-    65536,};
+};
 
 /* Sine of the first quarter: a in 0..16384 (16384 = 90 degrees). Linear
  * interpolation between table entries 64 angle units apart, rounded. */
@@ -258,9 +262,9 @@ static zl_fixed sin_first_quarter(int32_t a)
     int32_t frac = a & 63;
     int32_t lo, hi;
     if (i >= 256)
-        return TABLE_S32(sin_quarter, 256);
-    lo = TABLE_S32(sin_quarter, i);
-    hi = TABLE_S32(sin_quarter, i + 1);
+        return SIN_QUARTER_END;
+    lo = (int32_t)TABLE_U16(sin_quarter, i);
+    hi = i == 255 ? SIN_QUARTER_END : (int32_t)TABLE_U16(sin_quarter, i + 1);
     return lo + (((hi - lo) * frac + 32) >> 6);
 }
 

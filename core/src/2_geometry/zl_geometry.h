@@ -79,7 +79,7 @@ ZL_SHARED_STATIC uint32_t abs32(int32_t v)
  * planes come from window x = (x/w + 1) * W/2 >= -G, multiplied through by
  * 2w > 0: W x + (W + 2G) w >= 0; in pixel space window x is x itself.
  */
-ZL_SHARED_STATIC int64_t plane_distance(const zl_source *s, unsigned plane, const zl_cvert *v)
+ZL_SHARED_STATIC int64_t plane_distance_of(const zl_source *s, unsigned plane, const zl_cvert *v)
 {
     const int64_t g = ZL_GUARD_PX;
     const int64_t w = v->w, wd = s->width, ht = s->height;
@@ -101,6 +101,15 @@ ZL_SHARED_STATIC int64_t plane_distance(const zl_source *s, unsigned plane, cons
         return pixel ? (ht + g) * w - v->y : ht * v->y + (ht + 2 * g) * w;
     }
 }
+
+/* A copy of it in each file that clips, inlined in its loops; without the
+ * fast paths (zl_config.h) one out-of-line copy (zl_vertex.c). */
+#if ZL_FAST_PATHS
+#define plane_distance plane_distance_of
+#else
+int64_t zl_plane_distance(const zl_source *s, unsigned plane, const zl_cvert *v);
+#define plane_distance zl_plane_distance
+#endif
 
 /* Lights given in world (or eye) space (zl_light_point.c). The model
  * matrix's 3x3 A as A^-1 = inv / det 2^exp (det > 0; model NULL: the

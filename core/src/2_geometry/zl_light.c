@@ -127,7 +127,8 @@ static ZL_NOINLINE unsigned face_intensity(const zl_source *s, const uint16_t *i
     int32_t m0, m1, m2, dot, cosv;
     uint32_t len;
     /* every edge in [-2^14, 2^14) iff each e + 2^14 is below 2^15 */
-    if (((e0 + half) | (e1 + half) | (e2 + half) | (e3 + half) | (e4 + half) | (e5 + half)) < 2u * half &&
+    if (ZL_FAST_PATHS && /* off: large_normal's same numbers for every triangle (zl_config.h) */
+        ((e0 + half) | (e1 + half) | (e2 + half) | (e3 + half) | (e4 + half) | (e5 + half)) < 2u * half &&
         in_limit3(p0)) {
         const int32_t a0 = (int32_t)e0, a1 = (int32_t)e1, a2 = (int32_t)e2;
         const int32_t b0 = (int32_t)e3, b1 = (int32_t)e4, b2 = (int32_t)e5;
@@ -266,5 +267,9 @@ void zl_tri_shade(const zl_source *s, uint32_t t, zl_poly *poly)
     int32_t lq[3] = {0, 0, 0};
     if (ZL_FEATURE_LIGHTING && s->state->light_on) /* unlit: shade reads no light */
         zl_light_prepare(s->state, lq);
+    if (!ZL_FAST_PATHS) { /* one copy of shade() (zl_config.h); else inlined here too, a call less */
+        zl_tri_shade_lit(s, t, poly, lq);
+        return;
+    }
     shade(s, t, &s->mesh->indices[t * 3u], poly, lq);
 }

@@ -254,6 +254,22 @@ zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out)
  * overflow is every vertex transformed. Pixel space (no matrix) takes any
  * Q16.16 position: x, y are clipped to the guard band, z to 0..1.
  */
+/* Every vertex transformed (zl_transform_point checks its coordinates too). */
+static zl_status transform_every_vertex(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp)
+{
+    uint32_t i;
+    for (i = 0; i < vertex_count * 3u; i += 3) {
+        zl_vec3 v;
+        zl_vec4 c;
+        v.x = ZL_MESH_POS(positions, i);
+        v.y = ZL_MESH_POS(positions, i + 1);
+        v.z = ZL_MESH_POS(positions, i + 2);
+        if (zl_transform_point(mvp, v, &c) != ZL_OK)
+            return ZL_ERR_RANGE;
+    }
+    return ZL_OK;
+}
+
 zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp)
 {
     int64_t big[4] = {0, 0, 0, ZL_FX_ONE};
@@ -266,6 +282,8 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
             return ZL_ERR_RANGE;
     if (positions == NULL)
         return ZL_OK;
+    if (!ZL_FAST_PATHS) /* no bound: the same answer, less code (zl_config.h) */
+        return transform_every_vertex(positions, vertex_count, mvp);
     n = vertex_count * 3u;
     /* The OR of the |coordinates| per axis is at least their largest and
      * below twice it: when all three ORs are below the limit, every

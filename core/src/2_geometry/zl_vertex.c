@@ -163,6 +163,13 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
     return 1;
 }
 
+#if !ZL_FAST_PATHS
+int64_t zl_plane_distance(const zl_source *s, unsigned plane, const zl_cvert *v)
+{
+    return plane_distance_of(s, plane, v);
+}
+#endif
+
 unsigned zl_outcode(const zl_source *s, const zl_cvert *v)
 {
     unsigned code = 0, p;
@@ -603,15 +610,35 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
     return 1;
 }
 
+/* vx_prepare's answer without its set-up: every matrix entry in range. */
+static int matrix_in_limit(const zl_mat4 *m)
+{
+    int k;
+    for (k = 0; k < 16; k++)
+        if (!in_limit(m->m[k]))
+            return 0;
+    return 1;
+}
+
+/*
+ * Without the fast paths (ZL_FAST_PATHS=0, zl_config.h) every cached vertex
+ * is cache_vertex_generic's: vx_cache computes the same vertex (the same
+ * transform rows and their range, the same 7 planes, projection, residuals
+ * and depth), faster, and its code goes. Invalid exactly when vx_cache's
+ * is: a coordinate or matrix entry beyond the limits, or a row beyond
+ * Q16.16 (zl_transform_point).
+ */
 int zl_vx_prepare(const zl_source *s, zl_vx *vx)
 {
+    if (!ZL_FAST_PATHS)
+        return s->mvp == NULL || matrix_in_limit(s->mvp);
     return s->mvp == NULL || vx_prepare(s, vx);
 }
 
 void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_vertex *out)
 {
     const zl_fixed *p = &s->mesh->positions[idx * 3u];
-    if (s->mvp == NULL)
+    if (s->mvp == NULL || !ZL_FAST_PATHS)
         *out = cache_vertex_generic(s, idx);
     else if (!vx_fast(vx, p, out, vx->exact != NULL))
         *out = vx_cache(vx, p);
@@ -620,7 +647,7 @@ void zl_vx_vertex(const zl_source *s, const zl_vx *vx, uint16_t idx, zl_cached_v
 zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
 {
     vx_setup vs;
-    if (s->mvp == NULL)
+    if (s->mvp == NULL || !ZL_FAST_PATHS)
         return cache_vertex_generic(s, idx);
     if (!vx_prepare(s, &vs)) {
         zl_cached_vertex c;
@@ -639,6 +666,22 @@ zl_cached_vertex zl_cache_vertex(const zl_source *s, uint16_t idx)
     }
 }
 
+/* zl_cache_vertices with a matrix and without the fast paths: every vertex
+ * by the definition (zl_vx_prepare's comment), none when a matrix entry is
+ * out of range. */
+static ZL_NOINLINE zl_status cache_by_definition(const zl_source *s, zl_cached_vertex *cache, uint16_t first,
+                                                 uint16_t count)
+{
+    zl_status st = matrix_in_limit(s->mvp) ? ZL_OK : ZL_ERR_RANGE;
+    uint32_t v;
+    for (v = first; v < (uint32_t)first + count; v++) {
+        cache[v] = cache_vertex_generic(s, (uint16_t)v); /* invalid throughout when the matrix is */
+        if (cache[v].x == ZL_CACHE_INVALID)
+            st = ZL_ERR_RANGE;
+    }
+    return st;
+}
+
 zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_t first, uint16_t count)
 {
     zl_cached_vertex bad;
@@ -650,6 +693,8 @@ zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_
     bad.y = 0;
     bad.z = 0;
     ZL_CV_SET_FINE(&bad, 0, 0);
+    if (!ZL_FAST_PATHS && s->mvp != NULL)
+        return cache_by_definition(s, cache, first, count);
     if (s->mvp == NULL) {
         /* Pixel space: nothing can be out of range. */
         uint32_t v;
@@ -661,14 +706,6 @@ zl_status zl_cache_vertices(const zl_source *s, zl_cached_vertex *cache, uint16_
         for (; c != end; c++)
             *c = bad;
         return ZL_ERR_RANGE;
-    }
-    if (!ZL_FAST_PATHS) { /* (zl_config.h) every vertex by vx_cache, vx_fast's exact values */
-        for (; c != end; c++, p += 3) {
-            *c = vx_cache(&vs, p);
-            if (c->x == ZL_CACHE_INVALID)
-                st = ZL_ERR_RANGE;
-        }
-        return st;
     }
     /* Two loops: vx_fast inlined once per depth mapping, no test a vertex. */
     if (vs.exact != NULL) {

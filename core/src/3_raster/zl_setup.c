@@ -80,7 +80,8 @@ static int64_t muldiv_pow2(int64_t s, unsigned sh, int64_t c, int64_t limit, con
 {
     uint64_t m, num;
     uint32_t c32, q;
-    if (c > UINT32_MAX || s > (INT64_MAX >> (sh + 1)) || s < -(INT64_MAX >> (sh + 1)))
+    if (!ZL_FAST_PATHS || /* off: the division in 64 bits, the same value (zl_config.h) */
+        c > UINT32_MAX || s > (INT64_MAX >> (sh + 1)) || s < -(INT64_MAX >> (sh + 1)))
         return muldiv_pow2_slow(s, sh, c, limit);
     c32 = (uint32_t)c;
     m = (uint64_t)(s < 0 ? -s : s) << sh;
@@ -127,7 +128,7 @@ static void plane_setup(zl_attr *at, const plane_frame *pf, int64_t a0, int64_t 
     int64_t ga = da1 * pf->dy2 - da2 * pf->dy1;
     int64_t gb = pf->dx1 * da2 - pf->dx2 * da1;
     int64_t c = pf->c, base;
-    if (plane_fast(at, pf, a0, a1, a2))
+    if (ZL_FAST_PATHS && plane_fast(at, pf, a0, a1, a2)) /* the same values, cheaper (zl_config.h) */
         return;
     if (c < 0) {
         c = -c;

@@ -585,7 +585,9 @@ void zl_span_gouraud(const zl_span_state *ss, uint8_t *crow, uint16_t *zrow, int
                          uint32_t dz, const uint32_t *c, const uint32_t *dc)
 {
     int32_t k;
-    if (ss->bpp != 2 || !stays_below(c[0], dc[0], n, UINT32_C(256) << 16) || !stays_below(c[1], dc[1], n, UINT32_C(256) << 16) ||
+    /* Without the fast paths (zl_config.h) every span takes the per-channel
+     * loop: the same pixels as the packed lanes, less code. */
+    if (!ZL_FAST_PATHS || ss->bpp != 2 || !stays_below(c[0], dc[0], n, UINT32_C(256) << 16) || !stays_below(c[1], dc[1], n, UINT32_C(256) << 16) ||
         !stays_below(c[2], dc[2], n, UINT32_C(256) << 16)) {
         span_gouraud_generic(ss, crow, zrow, n, z, dz, c, dc);
         return;

@@ -128,7 +128,7 @@ static void draw_rows(const zl_context *ctx, zl_active *t, zl_gouraud *g, zl_tex
             ;
         return;
     }
-    if (tp == NULL && !ss->gouraud) {
+    if (ZL_FAST_PATHS && tp == NULL && !ss->gouraud) { /* else zl_tri_row's rows below: the same spans */
         zl_tri_rows_flat(t, ss, (uint8_t *)ctx->target.color, ctx->target.color_stride, (uint8_t *)ctx->target.depth,
                          ctx->target.depth_stride);
         return;

@@ -361,6 +361,23 @@ static ZL_NOINLINE void classify_fill(zl_frame *f, plan_pass *p, const zl_frame_
     p->n = n;
 }
 
+/* classify_fill without the fast paths (zl_config.h): the same rows, from
+ * one out-of-line copy of the classification on the cache. */
+static ZL_NOINLINE void classify_fill_compact(zl_frame *f, plan_pass *p, const zl_frame_mesh *m,
+                                              const zl_source *s, const zl_style *sty)
+{
+    unsigned mi = (unsigned)(m - f->meshes);
+    uint32_t t, id = m->tri_base;
+    for (t = 0; t < m->mesh.triangle_count; t++, id++) {
+        int32_t first, end;
+        int cached = zl_frame_rows_cached(f, mi, t, &first, &end);
+        if (cached < 0)
+            classify_polygon(f, p, m, s, sty, t);
+        else if (cached > 0)
+            note(f, p, id, first, end, 1);
+    }
+}
+
 /* The place pass of classify_fill when the count pass marked the visible
  * triangles in p->seen: only those, and of a triangle cached inside only its
  * first row (classify_cached's), which is all placing needs. */
@@ -501,12 +518,14 @@ static uint32_t classify_pass(zl_frame *f, plan_pass *p)
             classify_lines(f, p, mi, &s);
         else if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL))
             classify_pieces(f, p, m, &s, sty);
-        else if (p->marking && p->diff == NULL)
+        else if (ZL_FAST_PATHS && p->marking && p->diff == NULL)
             place_fill_seen(f, p, m, &s, sty);
-        else if (p->marking)
+        else if (ZL_FAST_PATHS && p->marking)
             classify_fill_marking(f, p, m, &s, sty, 0);
-        else if (p->seen != NULL && p->diff != NULL)
+        else if (ZL_FAST_PATHS && p->seen != NULL && p->diff != NULL)
             classify_fill_may_mark(f, p, m, &s, sty);
+        else if (!ZL_FAST_PATHS)
+            classify_fill_compact(f, p, m, &s, sty);
         else
             classify_fill(f, p, m, &s, sty);
     }
@@ -563,7 +582,7 @@ static void reserve_seen(const zl_frame *f, plan_pass *p)
     uint32_t ids = f->triangle_total, words = (ids + 15u) / 16u; /* in keys */
     p->seen = NULL;
     p->marking = 0;
-    if (ids <= p->na + p->nb)
+    if (!ZL_FAST_PATHS || ids <= p->na + p->nb) /* without the fast paths: classify twice */
         return;
     if (p->nb >= words && p->nb >= p->na) {
         p->nb -= words;

@@ -524,7 +524,10 @@ static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, 
 {
     uint16_t i = y == 0 ? 0 : f->row_start[y - 1], end = f->row_start[y];
     unsigned mi, flags = 0, func = 0;
-    if (f->ext != NULL) {
+    /* Without the fast paths (zl_config.h) the styled walk takes every row:
+     * the same records and spans through zl_tri_row, and no copy of the
+     * walk, its set-up (activate_plain) and its RGB565 spans in flash. */
+    if (f->ext != NULL || !ZL_FAST_PATHS) {
         render_row_styled(f, y, i, end, crow, zrow);
         return;
     }
@@ -538,7 +541,7 @@ static ZL_ALWAYS_INLINE void render_row(zl_frame *f, uint16_t y, uint8_t *crow, 
         if (f->meshes[mi].span.func != func)
             flags = 0;
     }
-    if (flags == 0 || !ZL_FAST_PATHS) /* (the LESS and LEQUAL copies: ZL_FAST_PATHS, zl_config.h) */
+    if (flags == 0)
         render_row_plain(f, y, i, end, crow, zrow);
     else if (func == ZL_LESS)
         render_row_less(f, y, i, end, crow, zrow);
