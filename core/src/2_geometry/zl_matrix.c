@@ -245,15 +245,6 @@ zl_status zl_transform_point(const zl_mat4 *m, zl_vec3 v, zl_vec4 *out)
     return ZL_OK;
 }
 
-/*
- * The transform limits of zline.h's LIMITS block, checked once per draw
- * before any pixel: with a matrix, every entry and every vertex coordinate
- * within +-16384.0, and no vertex whose clip-space position leaves Q16.16.
- * A bound from the largest coordinate per axis settles the last part for
- * ordinary scenes in one pass over the positions; only when the bound could
- * overflow is every vertex transformed. Pixel space (no matrix) takes any
- * Q16.16 position: x, y are clipped to the guard band, z to 0..1.
- */
 /* Every vertex transformed (zl_transform_point checks its coordinates too). */
 static zl_status transform_every_vertex(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp)
 {
@@ -270,6 +261,15 @@ static zl_status transform_every_vertex(const zl_fixed *positions, uint32_t vert
     return ZL_OK;
 }
 
+/*
+ * The transform limits of zline.h's LIMITS block, checked once per draw
+ * before any pixel: with a matrix, every entry and every vertex coordinate
+ * within +-16384.0, and no vertex whose clip-space position leaves Q16.16.
+ * A bound from the largest coordinate per axis settles the last part for
+ * ordinary scenes in one pass over the positions; only when the bound could
+ * overflow is every vertex transformed. Pixel space (no matrix) takes any
+ * Q16.16 position: x, y are clipped to the guard band, z to 0..1.
+ */
 zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, const zl_mat4 *mvp)
 {
     int64_t big[4] = {0, 0, 0, ZL_FX_ONE};
@@ -322,17 +322,7 @@ zl_status zl_check_positions(const zl_fixed *positions, uint32_t vertex_count, c
         if (zl_floor_shift64(bound + 32768, 16) > INT32_MAX)
             exact = 1;
     }
-    n = vertex_count * 3u;
-    for (i = 0; exact && i < n; i += 3) {
-        zl_vec3 v;
-        zl_vec4 c;
-        v.x = ZL_MESH_POS(positions, i);
-        v.y = ZL_MESH_POS(positions, i + 1);
-        v.z = ZL_MESH_POS(positions, i + 2);
-        if (zl_transform_point(mvp, v, &c) != ZL_OK)
-            return ZL_ERR_RANGE;
-    }
-    return ZL_OK;
+    return exact ? transform_every_vertex(positions, vertex_count, mvp) : ZL_OK;
 }
 
 zl_status zl_check_geometry(const zl_mesh *m, const zl_mat4 *mvp)

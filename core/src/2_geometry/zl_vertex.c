@@ -319,14 +319,23 @@ static uint32_t fast_bound(const vx_setup *vs)
     return p;
 }
 
+/* Every matrix entry in range. */
+static int matrix_in_limit(const zl_mat4 *m)
+{
+    int k;
+    for (k = 0; k < 16; k++)
+        if (!in_limit(m->m[k]))
+            return 0;
+    return 1;
+}
+
 /* 0 when a matrix entry is out of range: then every vertex is invalid. */
 static int vx_prepare(const zl_source *s, vx_setup *vs)
 {
     const zl_fixed *m = s->mvp->m;
     int k;
-    for (k = 0; k < 16; k++)
-        if (!in_limit(m[k]))
-            return 0;
+    if (!matrix_in_limit(s->mvp))
+        return 0;
     for (k = 0; k < 16; k++)
         vs->m[k] = m[k];
     for (k = 0; k < 4; k++)
@@ -607,16 +616,6 @@ static ZL_ALWAYS_INLINE int vx_fast(const vx_setup *vs, const zl_fixed *p, zl_ca
         ZL_CV_SET_FINE(c, ZL_FINE_NONE, ZL_FINE_NONE);
     /* the exact mapping from w's sum without bias[3]'s 2^15 of rounding */
     c->z = exact ? depth_of_wsum(vs->exact, wsum - 32768) : depth_q16((uint32_t)z, (uint32_t)w);
-    return 1;
-}
-
-/* vx_prepare's answer without its set-up: every matrix entry in range. */
-static int matrix_in_limit(const zl_mat4 *m)
-{
-    int k;
-    for (k = 0; k < 16; k++)
-        if (!in_limit(m->m[k]))
-            return 0;
     return 1;
 }
 
