@@ -85,6 +85,9 @@ int zl_frame_layout(const zl_frame_config *c, layout *l);
  * half the cached vertices above it, set as the part's window
  * (zl_frame_split.c; both parts compute the same). */
 void zl_frame_split_resolve(zl_frame *f);
+/* Every mesh's vertices into the vertex cache, but those add_record cached
+ * (zl_frame_plan.c). */
+void zl_frame_fill_cache(zl_frame *f);
 /* Planning, on the first band (zl_frame_plan.c). */
 zl_status zl_frame_plan(zl_frame *f);
 /* Over capacity's classification of primitive t of mesh record mi, the
@@ -93,8 +96,9 @@ zl_status zl_frame_plan(zl_frame *f);
  * it draws nothing; -1 for every other primitive (the general case). */
 int zl_frame_rows_cached(const zl_frame *f, unsigned mi, uint32_t t, int32_t *first, int32_t *end);
 /* Over capacity (zl_frame_over.c): after zl_frame_plan's ZL_ERR_CAPACITY on
- * a whole frame, check that every primitive fits alone (else
- * ZL_ERR_CAPACITY). Then, a band at a time from row r0: the end of the
+ * a whole frame (without the fast paths, zl_config.h: on every whole frame,
+ * having filled the vertex cache), check that every primitive fits alone
+ * (else ZL_ERR_CAPACITY) and set the whole frame's needs. Then, a band at a time from row r0: the end of the
  * longest window of whole bands from r0 that one plan holds (r0 when not
  * even one band does), and the plan of rows [r0, r1) from primitive id_lo
  * on, as many as fit (*id_hi: the first left out). */

@@ -137,19 +137,17 @@ void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, 
     f->active_head = ZL_LIST_END;
 }
 
-/* The end of the longest window of whole bands from row r0 whose
- * primitives fit in one plan: those crossing it at most max_triangles, at
- * most max_active records on each of its rows; r0 when not even its first
- * band fits (then the band goes in slices). One classification pass: the
- * primitives reaching r0 or below counted at their first row there
- * (row_start) and their records over their rows (a difference array in the
- * pool, as planning's). */
-uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
+/* One classification pass from row r0: every primitive reaching r0 or below
+ * counted at its first row there (row_start) and its records over its rows
+ * (a difference array in the pool, as planning's). 0 when one primitive
+ * alone does not fit (max_triangles 0, or more pieces than max_active);
+ * the counts are whole either way (the needs of a refused frame). */
+static int count_from(zl_frame *f, uint16_t r0, int32_t *diff)
 {
-    int32_t *diff = (int32_t *)(void *)f->pool;
-    uint16_t h = f->cfg.height, y, end_ok = r0;
-    uint32_t id, kept = 0, active = 0;
+    uint16_t h = f->cfg.height;
+    uint32_t id;
     unsigned mi = 0;
+    int fits = 1;
     memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
     memset(diff, 0, ((size_t)h + 1) * sizeof(int32_t));
     for (id = 0; id < f->triangle_total; id++) {
@@ -159,12 +157,27 @@ uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
         pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
         if (pieces == 0 || end <= r0)
             continue;
+        if (f->cfg.max_triangles == 0 || pieces > f->cfg.max_active)
+            fits = 0;
         if (first < r0)
             first = r0;
         f->row_start[first]++;
         diff[first] += (int32_t)pieces;
         diff[end] -= (int32_t)pieces;
     }
+    return fits;
+}
+
+/* The end of the longest window of whole bands from row r0 whose
+ * primitives fit in one plan: those crossing it at most max_triangles, at
+ * most max_active records on each of its rows; r0 when not even its first
+ * band fits (then the band goes in slices). */
+uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
+{
+    int32_t *diff = (int32_t *)(void *)f->pool;
+    uint16_t y, end_ok = r0;
+    uint32_t kept = 0, active = 0;
+    (void)count_from(f, r0, diff); /* every primitive fits alone: zl_frame_over_begin checked */
     for (y = r0; y < f->end_row; y++) {
         kept += f->row_start[y];
         active = (uint32_t)((int32_t)active + diff[y]);
@@ -178,15 +191,21 @@ uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
 
 zl_status zl_frame_over_begin(zl_frame *f)
 {
-    uint32_t id;
-    unsigned mi = 0;
-    for (id = 0; id < f->triangle_total; id++) {
-        int32_t first, end;
-        unsigned pieces;
-        mi = mesh_from(f, mi, id);
-        pieces = prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end);
-        if (pieces != 0 && (f->cfg.max_triangles == 0 || pieces > f->cfg.max_active))
-            return ZL_ERR_CAPACITY; /* one primitive alone does not fit */
+    int32_t *diff = (int32_t *)(void *)f->pool;
+    uint32_t running = 0;
+    uint16_t y;
+    int fits;
+    if (!ZL_FAST_PATHS) /* every frame starts here (zl_frame_next_band): no plan filled the cache */
+        zl_frame_fill_cache(f);
+    fits = count_from(f, 0, diff);
+    /* the whole frame's needs, as zl_frame_plan reports them */
+    f->needs.triangles = 0;
+    f->needs.active = 0;
+    for (y = 0; y < f->cfg.height; y++) {
+        f->needs.triangles += f->row_start[y];
+        running = (uint32_t)((int32_t)running + diff[y]);
+        if (running > f->needs.active)
+            f->needs.active = running;
     }
-    return ZL_OK;
+    return fits ? ZL_OK : ZL_ERR_CAPACITY; /* else one primitive alone does not fit */
 }

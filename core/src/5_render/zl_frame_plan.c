@@ -10,7 +10,7 @@
 #include "zl_frame_internal.h"
 #include "../3_raster/zl_raster.h"
 
-static void fill_cache(zl_frame *f)
+void zl_frame_fill_cache(zl_frame *f)
 {
     uint16_t mi;
     for (mi = 0; mi < f->mesh_count; mi++) {
@@ -634,7 +634,7 @@ zl_status zl_frame_plan(zl_frame *f)
         reserve_seen(f, &p);
     }
     if (!window) /* the parts cached theirs (zl_frame_prepare) */
-        fill_cache(f);
+        zl_frame_fill_cache(f);
     memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
     memset(p.diff, 0, ((size_t)h + 1) * sizeof(int32_t));
     visible = window ? classify_pass_window(f, &p) : classify_pass(f, &p);

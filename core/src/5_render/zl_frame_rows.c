@@ -184,7 +184,7 @@ static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
     zl_poly *poly = &tpoly.p;
     unsigned k, n = 1;
     source_of(f, m, &s);
-    if (!lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly, 0))
+    if (ZL_FAST_PATHS && !lines && (m->flags & MESH_FLAT) && activate_cached(f, mi, &s, t, link, poly, 0))
         return;
     if (!lines) {
         if (!(zl_style_planes(sty) ? zl_tri_polygon_tex(&s, sty, t, &tpoly)
@@ -612,7 +612,8 @@ static ZL_NOINLINE zl_status over_band(zl_frame *f, uint16_t rows, uint8_t *colo
         if (end > r0) {
             uint32_t id_hi;
             zl_frame_over_slice(f, r0, end, 0, &id_hi); /* takes them all: the window counted them */
-            f->needs.replans++;
+            if (ZL_FAST_PATHS || r0 != 0 || end != f->end_row) /* (else the whole frame's plan: no replan) */
+                f->needs.replans++;
             dry_rows(f, r0, color, f->depth_band);
             f->over_end = end;
         }
@@ -672,6 +673,25 @@ static ZL_NOINLINE zl_status next_band_over(zl_frame *f, zl_band *band)
     return ZL_OK;
 }
 
+/* zl_frame_next_band without the fast paths (zl_config.h) on a whole
+ * frame: every frame is planned as over capacity's are, a window of bands
+ * at a time (a frame that fits is one window), so the planning of
+ * zl_frame_plan.c and the band loop below are not in flash. The same
+ * pixels, needs and errors; planning classifies every primitive four times
+ * instead of once or twice. */
+static ZL_NOINLINE zl_status next_band_compact(zl_frame *f, zl_band *band)
+{
+    if (f->depth_band == NULL) /* a zeroed zl_frame, never begun */
+        return ZL_ERR_ARG;
+    if (!f->over) {
+        zl_status st = zl_frame_over_begin(f);
+        if (st != ZL_OK)
+            return st;
+        f->over = 1;
+    }
+    return next_band_over(f, band);
+}
+
 zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
 {
     uint16_t rows, r, w;
@@ -683,6 +703,8 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
      * with ZL_ERR_ARG (tests/test_frame_faults.c). */
     if (f == NULL || band == NULL)
         return ZL_ERR_ARG;
+    if (!ZL_FAST_PATHS && !(ZL_FEATURE_SPLIT && f->part != 0))
+        return next_band_compact(f, band);
     if (!f->planned) { /* first band, or over capacity (then planned stays 0: no test added per band) */
         zl_status st;
         if (f->over)
