@@ -127,20 +127,26 @@
  * - spans: the RGB565 LESS / LEQUAL loops of flat rows and spans
  *   (rows_flat_565, span_flat_565 / _exact) and the packed Gouraud lanes
  *   (lanes_fast, lanes_generic);
- * - scanline mode: planning's inlined classification on the vertex cache
- *   and its bit array of visible triangles (classify_fill_may_mark,
- *   place_fill_seen), the row walks for LESS, LEQUAL and unstyled meshes
- *   (render_row_less, _lequal, _plain, activate_plain).
- * 0 sends those vertices, triangles, spans and rows to the general code:
+ * - scanline mode: the planning of a whole frame (zl_frame_plan: the
+ *   edge table's first rows kept in idle regions, the bit array of visible
+ *   triangles, the inlined classification on the vertex cache) beside
+ *   over capacity's windows, the band loop of a planned frame, the set-up
+ *   of cached flat triangles (activate_cached), the row walks for LESS,
+ *   LEQUAL and unstyled meshes (render_row_less, _lequal, _plain,
+ *   activate_plain).
+ * 0 sends those vertices, triangles, spans and rows to the general code,
+ * and plans every scanline frame as over capacity's are (zl_frame_over.c:
+ * a frame that fits is one window, with the same needs and no replan):
  * the same pixels (the *_fast_paths_off tests), slower. With the other
  * knobs of README's minimal-small configuration, Cortex-M0 -O2
  * (ZLINE_CONFIG="..." sh port/cortex-m/bench/measure-m0.sh, with and without
- * ZL_FAST_PATHS=0): the fill scene takes 5.6 times the instructions, the
- * bunny 2.4 times with the vertex cache and 2.1 times in scanline mode.
- * (It was 1.7 and 1.3 times when 0 kept the prepared vertex transform, the
- * 64-by-32 divisions, the cached classification inlined, the unstyled row
- * walk, the Gouraud lanes and the 32-bit planes and normals: dropping them
- * took the minimal-small-frame row of README's flash table within 16 KB.)
+ * ZL_FAST_PATHS=0): the fill scene takes 5.6 times the instructions in
+ * frame mode and 6.1 times in scanline mode, the bunny 2.4 times with the
+ * vertex cache and 2.6 times in scanline mode. (The bunny's scanline
+ * ratio was 1.3 when 0 kept the inlined classification and the unstyled
+ * row walk, 2.1 when it kept zl_frame_plan and activate_cached: dropping
+ * them took the minimal-small-frame row of README's flash table within
+ * 16 KB and the minimal-small row from 32,431 to its figure now.)
  */
 #ifndef ZL_FAST_PATHS
 #define ZL_FAST_PATHS 1

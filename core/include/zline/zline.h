@@ -857,13 +857,16 @@ zl_status zl_draw_outlines(zl_context *ctx, const zl_mesh *mesh, const zl_mat4 *
  * first row are first walked there without writing. zl_frame_needs() still
  * reports the true needs, and `replans` the plans made after the whole
  * frame's (0 when the scene fitted: check it to know that it happened).
- * Cost: every window or band classifies every primitive again, up to three
- * times (find the window, count, place), so a frame over capacity is much
+ * Cost: every window or band classifies every primitive again, twice for a
+ * window (count, place) and up to three times for a band in passes (find
+ * the window, count, place), so a frame over capacity is much
  * slower: the bunny on the host (callgrind, tools/bench/zline-bench-modes
  * MODEL --only MODE --over K) 2.17 M instructions in scanline mode within
- * capacity, 192 M at half its capacities, 235 M at a tenth; in bands of 16
- * rows 2.14 M, 23.4 M, 23.7 M. Size for the needs (zl_frame_bound), and
- * treat replans as a warning. Frames that fit take the same path as before.
+ * capacity, 191 M at half its capacities, 234 M at a tenth; in bands of 16
+ * rows 2.14 M, 21.7 M, 21.9 M. Size for the needs (zl_frame_bound), and
+ * treat replans as a warning. Frames that fit take the same path as before
+ * (without the fast paths, zl_config.h's ZL_FAST_PATHS=0, every frame is
+ * planned this way: one window when it fits, with replans 0).
  * ZL_ERR_CAPACITY remains, before any band, only when one primitive alone
  * does not fit (max_triangles 0, or fewer active records than its pieces:
  * up to 8 for a clipped triangle, 3 for the lines or points of a polygon

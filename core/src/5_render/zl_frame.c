@@ -45,7 +45,8 @@ static uint32_t align8_32(uint32_t n)
 int zl_frame_layout(const zl_frame_config *c, layout *l)
 {
     uint32_t bpp = (uint32_t)zl_format_bytes((zl_format)c->format);
-    uint32_t pool, gouraud, diff, band_px, o[12];
+    uint32_t pool, gouraud, diff, band_px, size[L_TOTAL], total = 0;
+    unsigned k;
     if (c->width < 1 || c->height < 1 || c->width > ZL_MAX_DIM || c->height > ZL_MAX_DIM || bpp == 0 ||
         c->band_rows < 1 || c->band_rows > c->height || c->color_buffers < 1 || c->color_buffers > 2 ||
         c->max_meshes < 1 || c->max_meshes > 255 || c->max_triangles > 65535 || c->max_active < 1 ||
@@ -56,36 +57,28 @@ int zl_frame_layout(const zl_frame_config *c, layout *l)
     gouraud = c->gouraud ? (uint32_t)c->max_active * (uint32_t)sizeof(zl_gouraud) : 0;
     /* Planning borrows the pool for a difference array of int32 per row. */
     diff = ((uint32_t)c->height + 1u) * (uint32_t)sizeof(int32_t);
-    o[0] = 0; /* meshes */
-    o[1] = o[0] + align8_32((uint32_t)c->max_meshes * (uint32_t)sizeof(zl_frame_mesh));
-    o[2] = o[1] + align8_32((uint32_t)c->max_vertices * (uint32_t)sizeof(zl_cached_vertex));
-    o[3] = o[2] + align8_32(((uint32_t)c->height + 1u) * (uint32_t)sizeof(uint16_t));
-    o[4] = o[3] + align8_32((uint32_t)c->max_triangles * (uint32_t)sizeof(uint16_t));
-    o[5] = o[4] + align8_32(pool);
     if (align8_32(pool) + gouraud < diff)
         gouraud = diff - align8_32(pool);
-    o[6] = o[5] + align8_32(gouraud);
-    o[7] = o[6] + (c->styled ? align8_32((uint32_t)c->max_meshes * (uint32_t)sizeof(zl_frame_ext)) : 0);
-    o[8] = o[7] + (c->textured ? align8_32((uint32_t)c->max_active * (uint32_t)sizeof(zl_texplanes)) : 0);
-    o[9] = o[8] + align8_32(band_px * 2u);
-    o[10] = o[9] + align8_32(band_px * bpp);
-    o[11] = o[10] + (c->color_buffers == 2 ? align8_32(band_px * bpp) : 0);
+    size[L_MESHES] = (uint32_t)c->max_meshes * (uint32_t)sizeof(zl_frame_mesh);
+    size[L_VCACHE] = (uint32_t)c->max_vertices * (uint32_t)sizeof(zl_cached_vertex);
+    size[L_ROW_START] = ((uint32_t)c->height + 1u) * (uint32_t)sizeof(uint16_t);
+    size[L_VISIBLE] = (uint32_t)c->max_triangles * (uint32_t)sizeof(uint16_t);
+    size[L_POOL] = pool;
+    size[L_GOURAUD] = gouraud;
+    size[L_EXT] = c->styled ? (uint32_t)c->max_meshes * (uint32_t)sizeof(zl_frame_ext) : 0;
+    size[L_TEX] = c->textured ? (uint32_t)c->max_active * (uint32_t)sizeof(zl_texplanes) : 0;
+    size[L_DEPTH] = band_px * 2u;
+    size[L_COLOR0] = band_px * bpp;
+    size[L_COLOR1] = c->color_buffers == 2 ? band_px * bpp : 0;
+    for (k = 0; k < L_TOTAL; k++) { /* each region 8-byte aligned */
+        l->at[k] = (size_t)total;
+        total += align8_32(size[k]);
+    }
 #if SIZE_MAX < UINT32_MAX
-    if (o[11] > SIZE_MAX)
+    if (total > SIZE_MAX)
         return 0;
 #endif
-    l->meshes = (size_t)o[0];
-    l->vcache = (size_t)o[1];
-    l->row_start = (size_t)o[2];
-    l->visible = (size_t)o[3];
-    l->pool = (size_t)o[4];
-    l->gouraud = (size_t)o[5];
-    l->ext = (size_t)o[6];
-    l->tex = (size_t)o[7];
-    l->depth = (size_t)o[8];
-    l->color0 = (size_t)o[9];
-    l->color1 = (size_t)o[10];
-    l->total = (size_t)o[11];
+    l->at[L_TOTAL] = (size_t)total;
     return 1;
 }
 
@@ -94,7 +87,7 @@ size_t zl_frame_bytes(const zl_frame_config *cfg)
     layout l;
     if (cfg == NULL || !zl_frame_layout(cfg, &l))
         return 0;
-    return l.total;
+    return l.at[L_TOTAL];
 }
 
 zl_status(zl_frame_begin)(zl_frame *f, const zl_frame_config *cfg, void *work, size_t work_bytes,
@@ -110,24 +103,24 @@ zl_status(zl_frame_begin)(zl_frame *f, const zl_frame_config *cfg, void *work, s
         return ZL_ERR_SIZE;
     if ((!ZL_FEATURE_FORMATS && cfg->format == ZL_FORMAT_RGB888) || (!ZL_FEATURE_SPLIT && cfg->parts == 2))
         return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */
-    if (work_bytes < l.total)
+    if (work_bytes < l.at[L_TOTAL])
         return ZL_ERR_SIZE;
     memset(f, 0, sizeof *f);
     f->cfg = *cfg;
     f->clear_color = clear_color;
     f->clear_depth = clear_depth;
     f->end_row = cfg->height;
-    f->meshes = (zl_frame_mesh *)(void *)(w + l.meshes);
-    f->vcache = w + l.vcache;
-    f->row_start = (uint16_t *)(void *)(w + l.row_start);
-    f->visible = (uint16_t *)(void *)(w + l.visible);
-    f->pool = (zl_active *)(void *)(w + l.pool);
-    f->gouraud = cfg->gouraud ? w + l.gouraud : NULL;
-    f->ext = cfg->styled ? w + l.ext : NULL;
-    f->tex = cfg->textured ? w + l.tex : NULL;
-    f->depth_band = (uint16_t *)(void *)(w + l.depth);
-    f->color_band[0] = w + l.color0;
-    f->color_band[1] = cfg->color_buffers == 2 ? w + l.color1 : w + l.color0;
+    f->meshes = (zl_frame_mesh *)(void *)(w + l.at[L_MESHES]);
+    f->vcache = w + l.at[L_VCACHE];
+    f->row_start = (uint16_t *)(void *)(w + l.at[L_ROW_START]);
+    f->visible = (uint16_t *)(void *)(w + l.at[L_VISIBLE]);
+    f->pool = (zl_active *)(void *)(w + l.at[L_POOL]);
+    f->gouraud = cfg->gouraud ? w + l.at[L_GOURAUD] : NULL;
+    f->ext = cfg->styled ? w + l.at[L_EXT] : NULL;
+    f->tex = cfg->textured ? w + l.at[L_TEX] : NULL;
+    f->depth_band = (uint16_t *)(void *)(w + l.at[L_DEPTH]);
+    f->color_band[0] = w + l.at[L_COLOR0];
+    f->color_band[1] = cfg->color_buffers == 2 ? w + l.at[L_COLOR1] : w + l.at[L_COLOR0];
     f->active_head = ZL_LIST_END;
     return ZL_OK;
 }

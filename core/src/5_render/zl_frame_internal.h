@@ -40,8 +40,24 @@ typedef struct {
 
 #define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
 
+/* The work buffer's regions in order (zl_frame_layout); L_TOTAL: the end. */
+enum {
+    L_MESHES,
+    L_VCACHE,
+    L_ROW_START,
+    L_VISIBLE,
+    L_POOL,
+    L_GOURAUD,
+    L_EXT,
+    L_TEX,
+    L_DEPTH,
+    L_COLOR0,
+    L_COLOR1,
+    L_TOTAL
+};
+
 typedef struct {
-    size_t meshes, vcache, row_start, visible, pool, gouraud, ext, tex, depth, color0, color1, total;
+    size_t at[L_TOTAL + 1]; /* byte offsets of the regions */
 } layout;
 
 ZL_SHARED_STATIC zl_frame_ext *ext_of(const zl_frame *f, unsigned mi)
@@ -98,10 +114,11 @@ int zl_frame_rows_cached(const zl_frame *f, unsigned mi, uint32_t t, int32_t *fi
 /* Over capacity (zl_frame_over.c): after zl_frame_plan's ZL_ERR_CAPACITY on
  * a whole frame (without the fast paths, zl_config.h: on every whole frame,
  * having filled the vertex cache), check that every primitive fits alone
- * (else ZL_ERR_CAPACITY) and set the whole frame's needs. Then, a band at a time from row r0: the end of the
- * longest window of whole bands from r0 that one plan holds (r0 when not
- * even one band does), and the plan of rows [r0, r1) from primitive id_lo
- * on, as many as fit (*id_hi: the first left out). */
+ * (else ZL_ERR_CAPACITY) and set the whole frame's needs. Then, a band at
+ * a time from row r0: the end of the longest window of whole bands from r0
+ * that one plan holds, planned (r0 when not even one band fits: no plan);
+ * or the plan of rows [r0, r1) from primitive id_lo on, as many as fit
+ * (*id_hi: the first left out). */
 zl_status zl_frame_over_begin(zl_frame *f);
 uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0);
 void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t *id_hi);

@@ -11,10 +11,12 @@
  * crossing the band's rows from a first id on, as many as fit; the band is
  * rendered slice after slice into the same colour and depth rows, so every
  * pixel still sees the primitives in id order (depth ties and blending as
- * in frame mode). Each window or band classifies every primitive once more
- * to find its window, and each plan twice more (count, then place): the
- * cost of the fallback, paid only over capacity; the normal path is
- * untouched.
+ * in frame mode). Each window classifies every primitive twice (count,
+ * which finds the window, then place), each slice of a band twice more:
+ * the cost of the fallback, paid only over capacity; the normal path is
+ * untouched. Without the fast paths (ZL_FAST_PATHS=0, zl_config.h) every
+ * whole frame is planned here, so zl_frame_plan.c's planning is not in
+ * flash: a frame that fits is one window, counted by zl_frame_over_begin.
  */
 #include <string.h>
 
@@ -94,6 +96,32 @@ static int take_rows(uint32_t *cnt, const zl_frame *f, int32_t r0, int32_t r1, i
     return 1;
 }
 
+/* The plan of rows [r0, r1) once row_start counts the primitives at
+ * their first rows: the counts become bucket starts, the primitives of ids
+ * [id_lo, id_hi) crossing those rows go to visible[] bucket by bucket (ids
+ * in order), the pool's records to its free list. */
+static void place(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t id_hi)
+{
+    uint32_t id, start = 0, slot;
+    unsigned mi = 0;
+    uint16_t j;
+    for (j = 0; j <= f->cfg.height; j++) { /* counts -> bucket starts */
+        uint16_t c = f->row_start[j];
+        f->row_start[j] = (uint16_t)start;
+        start += c;
+    }
+    for (id = id_lo; id < id_hi; id++) {
+        int32_t first, end;
+        mi = mesh_from(f, mi, id);
+        if (prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end) != 0 && first < r1 && end > r0)
+            f->visible[f->row_start[first]++] = (uint16_t)id;
+    }
+    for (slot = 0; slot < f->cfg.max_active; slot++)
+        f->pool[slot].next = (uint16_t)(slot + 1u < f->cfg.max_active ? slot + 1u : ZL_LIST_END);
+    f->free_head = 0;
+    f->active_head = ZL_LIST_END;
+}
+
 /* Plan the slice of rows [r0, r1) from primitive id_lo: the primitives
  * crossing those rows, in id order, while max_triangles and max_active
  * hold, bucketed by first row; *id_hi: the id the slice stopped before.
@@ -102,10 +130,9 @@ static int take_rows(uint32_t *cnt, const zl_frame *f, int32_t r0, int32_t r1, i
 void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, uint32_t *id_hi)
 {
     uint32_t *cnt = (uint32_t *)(void *)f->pool;
-    uint32_t id, n = 0, start = 0, slot;
+    uint32_t id, n = 0;
     unsigned mi = 0;
-    uint16_t j, h = f->cfg.height;
-    memset(f->row_start, 0, ((size_t)h + 1) * sizeof(uint16_t));
+    memset(f->row_start, 0, ((size_t)f->cfg.height + 1) * sizeof(uint16_t));
     memset(cnt, 0, (size_t)(r1 - r0) * sizeof(uint32_t));
     for (id = id_lo; id < f->triangle_total; id++) {
         int32_t first, end;
@@ -120,28 +147,14 @@ void zl_frame_over_slice(zl_frame *f, uint16_t r0, uint16_t r1, uint32_t id_lo, 
         n++;
     }
     *id_hi = id;
-    for (j = 0; j <= h; j++) { /* counts -> bucket starts */
-        uint16_t c = f->row_start[j];
-        f->row_start[j] = (uint16_t)start;
-        start += c;
-    }
-    for (id = id_lo, mi = 0; id < *id_hi; id++) { /* place: visible[] bucket by bucket, ids in order */
-        int32_t first, end;
-        mi = mesh_from(f, mi, id);
-        if (prim_rows(f, mi, id - f->meshes[mi].tri_base, &first, &end) != 0 && first < r1 && end > r0)
-            f->visible[f->row_start[first]++] = (uint16_t)id;
-    }
-    for (slot = 0; slot < f->cfg.max_active; slot++)
-        f->pool[slot].next = (uint16_t)(slot + 1u < f->cfg.max_active ? slot + 1u : ZL_LIST_END);
-    f->free_head = 0;
-    f->active_head = ZL_LIST_END;
+    place(f, r0, r1, id_lo, id);
 }
 
 /* One classification pass from row r0: every primitive reaching r0 or below
- * counted at its first row there (row_start) and its records over its rows
- * (a difference array in the pool, as planning's). 0 when one primitive
- * alone does not fit (max_triangles 0, or more pieces than max_active);
- * the counts are whole either way (the needs of a refused frame). */
+ * counted at its first row (row_start) and its records over its rows (a
+ * difference array in the pool, as planning's). 0 when one primitive alone
+ * does not fit (max_triangles 0, or more pieces than max_active); the
+ * counts are whole either way (the needs of a refused frame). */
 static int count_from(zl_frame *f, uint16_t r0, int32_t *diff)
 {
     uint16_t h = f->cfg.height;
@@ -159,8 +172,6 @@ static int count_from(zl_frame *f, uint16_t r0, int32_t *diff)
             continue;
         if (f->cfg.max_triangles == 0 || pieces > f->cfg.max_active)
             fits = 0;
-        if (first < r0)
-            first = r0;
         f->row_start[first]++;
         diff[first] += (int32_t)pieces;
         diff[end] -= (int32_t)pieces;
@@ -171,21 +182,31 @@ static int count_from(zl_frame *f, uint16_t r0, int32_t *diff)
 /* The end of the longest window of whole bands from row r0 whose
  * primitives fit in one plan: those crossing it at most max_triangles, at
  * most max_active records on each of its rows; r0 when not even its first
- * band fits (then the band goes in slices). */
+ * band fits (then the band goes in slices). A window is planned here, from
+ * the same counts: the primitives crossing it are those counted with a
+ * first row above its end, so the counts need no second pass. */
 uint16_t zl_frame_over_window(zl_frame *f, uint16_t r0)
 {
     int32_t *diff = (int32_t *)(void *)f->pool;
     uint16_t y, end_ok = r0;
     uint32_t kept = 0, active = 0;
-    (void)count_from(f, r0, diff); /* every primitive fits alone: zl_frame_over_begin checked */
-    for (y = r0; y < f->end_row; y++) {
+    /* every primitive fits alone (zl_frame_over_begin checked); row 0's
+     * counts are still there from zl_frame_over_begin, called just before
+     * the first band */
+    if (r0 != 0)
+        (void)count_from(f, r0, diff);
+    for (y = 0; y < f->end_row; y++) { /* the counted primitives crossing row y */
         kept += f->row_start[y];
         active = (uint32_t)((int32_t)active + diff[y]);
+        if (y < r0)
+            continue;
         if (kept > f->cfg.max_triangles || active > f->cfg.max_active)
             break;
         if ((uint16_t)(y + 1u) % f->cfg.band_rows == 0 || y + 1u == f->end_row)
             end_ok = (uint16_t)(y + 1u);
     }
+    if (end_ok > r0)
+        place(f, r0, end_ok, 0, f->triangle_total);
     return end_ok;
 }
 

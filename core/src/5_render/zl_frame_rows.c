@@ -177,7 +177,7 @@ static ZL_NOINLINE void activate(zl_frame *f, uint16_t id, uint16_t *link)
     uint8_t mi = mesh_of_id(f, id);
     const zl_frame_mesh *m = &f->meshes[mi];
     const zl_style *sty = style_of(f, mi);
-    int lines = sty != NULL && ext_of(f, mi)->is_lines;
+    int lines = (ZL_FEATURE_LINES || ZL_FEATURE_OUTLINES) && sty != NULL && ext_of(f, mi)->is_lines;
     uint32_t t = id - m->tri_base;
     zl_source s;
     zl_tpoly tpoly; /* texture attributes only when the style needs them */
@@ -608,10 +608,8 @@ static ZL_NOINLINE zl_status over_band(zl_frame *f, uint16_t rows, uint8_t *colo
         zl_fill16(f->depth_band + (size_t)r * w, f->clear_depth, w);
     }
     if (r0 >= f->over_end) { /* a new window, when its first band fits one plan */
-        uint16_t end = zl_frame_over_window(f, r0);
+        uint16_t end = zl_frame_over_window(f, r0); /* and its plan */
         if (end > r0) {
-            uint32_t id_hi;
-            zl_frame_over_slice(f, r0, end, 0, &id_hi); /* takes them all: the window counted them */
             if (ZL_FAST_PATHS || r0 != 0 || end != f->end_row) /* (else the whole frame's plan: no replan) */
                 f->needs.replans++;
             dry_rows(f, r0, color, f->depth_band);

@@ -18,7 +18,7 @@
  * with cfg.styled, stays unused: the records are shared). */
 static size_t part_bytes(const layout *l)
 {
-    return l->total - l->row_start;
+    return l->at[L_TOTAL] - l->at[L_ROW_START];
 }
 
 size_t zl_frame_part_bytes(const zl_frame_config *cfg)
@@ -84,13 +84,13 @@ zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_
     split_row = (uint16_t)(split_row - split_row % f->cfg.band_rows);
     *second = *f;
     second->row_start = (uint16_t *)(void *)w;
-    second->visible = (uint16_t *)(void *)(w + (l.visible - l.row_start));
-    second->pool = (zl_active *)(void *)(w + (l.pool - l.row_start));
-    second->gouraud = f->cfg.gouraud ? w + (l.gouraud - l.row_start) : NULL;
-    second->tex = f->cfg.textured ? w + (l.tex - l.row_start) : NULL;
-    second->depth_band = (uint16_t *)(void *)(w + (l.depth - l.row_start));
-    second->color_band[0] = w + (l.color0 - l.row_start);
-    second->color_band[1] = f->cfg.color_buffers == 2 ? w + (l.color1 - l.row_start) : second->color_band[0];
+    second->visible = (uint16_t *)(void *)(w + (l.at[L_VISIBLE] - l.at[L_ROW_START]));
+    second->pool = (zl_active *)(void *)(w + (l.at[L_POOL] - l.at[L_ROW_START]));
+    second->gouraud = f->cfg.gouraud ? w + (l.at[L_GOURAUD] - l.at[L_ROW_START]) : NULL;
+    second->tex = f->cfg.textured ? w + (l.at[L_TEX] - l.at[L_ROW_START]) : NULL;
+    second->depth_band = (uint16_t *)(void *)(w + (l.at[L_DEPTH] - l.at[L_ROW_START]));
+    second->color_band[0] = w + (l.at[L_COLOR0] - l.at[L_ROW_START]);
+    second->color_band[1] = f->cfg.color_buffers == 2 ? w + (l.at[L_COLOR1] - l.at[L_ROW_START]) : second->color_band[0];
     f->part = 1;
     second->part = 2;
     f->split_row = second->split_row = split_row;
