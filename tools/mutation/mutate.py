@@ -154,8 +154,13 @@ def main():
                 if rc != 0:
                     verdict, by = "killed", "(does not build)"
                 else:
+                    # A mutant is killed by its first failing test: without --markdown
+                    # (whose table names the killers) CTest stops there. A survivor still
+                    # passes every test: the verdict is the same, only the list is shorter.
+                    stop = [] if args.markdown else ["--stop-on-failure"]
                     rc, out = run(["ctest", "--test-dir", build, "-j", str(args.jobs), "-E", args.exclude,
-                                   "--timeout", "120"] + (["-R", args.tests] if args.tests else []), tree, 3600)
+                                   "--timeout", "120"] + stop + (["-R", args.tests] if args.tests else []), tree,
+                                  3600)
                     names = failed_tests(out)
                     verdict = "killed" if rc != 0 else "survived"
                     by = ", ".join(names[:3]) + (" ..." if len(names) > 3 else "")
