@@ -404,19 +404,34 @@ abi_mismatch() {
 # warnings are errors (the project's compiler); clang's are listed, not fatal
 # (zline's builds do not use clang for Cortex-M).
 debug_flags="-std=c99 -Wall -Wextra -pedantic -Wshadow -Wconversion -Wsign-conversion -ffunction-sections"
-debug_compile() { # debug_compile LABEL COMPILER FLAGS...: every core source, -O0 then -Og
-    label=$1; cc=$2; shift 2
+# debug_compile_at LABEL OPT COMPILER FLAGS...: every core source at OPT
+debug_compile_at() {
+    label=$1; opt=$2; cc=$3; shift 3
     werror=-Werror
     case $cc in clang*) werror= ;; esac
-    for opt in -O0 -Og; do
-        d=$out/debug/$label$opt
-        mkdir -p "$d" && (cd "$d" && "$cc" "$@" $opt $debug_flags $werror $(vendor_includes) -c $(vendor_sources)) \
-            >"$d.log" 2>&1 || { cat "$d.log"; fail "$label $opt: $cc $* $opt"; }
-        n=$(ls "$d" | wc -l)
-        [ "$n" -eq "$(vendor_sources | wc -l)" ] || fail "$label $opt: $n objects"
-        echo "$label $opt: $n objects, $(grep -c 'warning:' "$d.log") warnings"
-        grep 'warning:' "$d.log" | sed 's/^/    /'
-    done
+    d=$out/debug/$label$opt
+    mkdir -p "$d" && (cd "$d" && "$cc" "$@" $opt $debug_flags $werror $(vendor_includes) -c $(vendor_sources)) \
+        >"$d.log" 2>&1 || { cat "$d.log"; fail "$label $opt: $cc $* $opt"; }
+    n=$(ls "$d" | wc -l)
+    [ "$n" -eq "$(vendor_sources | wc -l)" ] || fail "$label $opt: $n objects"
+    echo "$label $opt: $n objects, $(grep -c 'warning:' "$d.log") warnings"
+    grep 'warning:' "$d.log" | sed 's/^/    /'
+}
+# debug_compile LABEL COMPILER FLAGS...: every core source at -O0 and at -Og,
+# the two at once (one compiler process each, one per core of CI's machine:
+# compiled one after the other they took 222 s, the longest consumer case);
+# their lines in that order, and a failure of either fails the case.
+debug_compile() {
+    label=$1; shift
+    mkdir -p "$out/debug"
+    (debug_compile_at "$label" -O0 "$@") >"$out/debug/$label-O0.out" 2>&1 &
+    o0=$!
+    (debug_compile_at "$label" -Og "$@") >"$out/debug/$label-Og.out" 2>&1 &
+    og=$!
+    wait $o0; s0=$?
+    wait $og; sg=$?
+    cat "$out/debug/$label-O0.out" "$out/debug/$label-Og.out"
+    [ $s0 -eq 0 ] && [ $sg -eq 0 ] || fail "$label: see above"
 }
 debug_opt_levels() {
     # Every compiler the case names must be there: without one the case is
@@ -458,10 +473,13 @@ presets() {
     echo "presets: every preset listed three times (configure, build, test); host and cortex-m4f configure"
 }
 
-# Two lanes at once (CI's machine has two cores, and most of a case is a
+# Three lanes at once (CI's machine has two cores, and most of a case is a
 # single-threaded CMake configure): the cases that need the installed host
-# package follow the install in lane B, in order; the rest are lane A. Each
-# lane's lines go to its own file, shown when both are done.
+# package follow the install in lane B, in order; debug_opt_levels, which
+# compiles the core 40 times (about 220 s on one core, 120 s on two), is lane
+# C alone from the start; the rest are lane A. (In the last two-lane run, lane
+# B was done after 97 s, lane A after 396 s, 222 s of them debug_opt_levels.)
+# Each lane's lines go to its own file, shown in order when all are done.
 lane_a() {
     check headers_c99_gcc headers gcc "$strict_c" c
     check headers_c99_clang headers clang "$strict_c" c
@@ -479,6 +497,8 @@ lane_a() {
     check vendor_cortex-m4f vendor_m4f
     check abi_mismatch abi_mismatch
     check presets presets
+}
+lane_c() {
     check debug_opt_levels debug_opt_levels
 }
 lane_b() {
@@ -496,15 +516,23 @@ lane_b() {
     check assets_find_package_cortex-m4f assets_find_package_m4f
     check assets_fetchcontent_cortex-m4f assets_fetchcontent_m4f
 }
+lane_c >"$out/lane-c.out" 2>&1 &
+lane_c_pid=$!
 lane_a >"$out/lane-a.out" 2>&1 &
 lane_a_pid=$!
 lane_b >"$out/lane-b.out" 2>&1
 wait $lane_a_pid
-cat "$out/lane-a.out" "$out/lane-b.out"
+wait $lane_c_pid
+lanes="$out/lane-a.out $out/lane-b.out $out/lane-c.out"
+# shellcheck disable=SC2086
+cat $lanes
 # the counters were kept in the lanes' subshells: count their lines
-passed=$(grep -c '^consumer: PASS ' "$out/lane-a.out" "$out/lane-b.out" | awk -F: '{ n += $NF } END { print n + 0 }')
-failed=$(grep -c '^consumer: FAIL ' "$out/lane-a.out" "$out/lane-b.out" | awk -F: '{ n += $NF } END { print n + 0 }')
-skipped=$(grep -c '^consumer: SKIP ' "$out/lane-a.out" "$out/lane-b.out" | awk -F: '{ n += $NF } END { print n + 0 }')
+# shellcheck disable=SC2086
+passed=$(grep -c '^consumer: PASS ' $lanes | awk -F: '{ n += $NF } END { print n + 0 }')
+# shellcheck disable=SC2086
+failed=$(grep -c '^consumer: FAIL ' $lanes | awk -F: '{ n += $NF } END { print n + 0 }')
+# shellcheck disable=SC2086
+skipped=$(grep -c '^consumer: SKIP ' $lanes | awk -F: '{ n += $NF } END { print n + 0 }')
 
 echo "consumer: $passed passed, $failed failed, $skipped skipped"
 [ "$failed" -eq 0 ]

@@ -25,21 +25,37 @@ gcc=${GCC:-gcc}
 build=${LINT_BUILD:-$top/build/lint}
 inc="-Icore/include -Iport/host"
 files=$(ls core/src/*/*.c port/host/*.c)
+db="$build/compile_commands.json"
 status=0
+# gcc -fanalyzer, one file; the script runs itself with --analyse for it.
+analyse() { # analyse FILE: gcc -fanalyzer with FILE's own compile command, its output sent nowhere
+    cmd=$(grep -B1 "\"file\": \"$top/$1\"" "$db" | sed -n 's/^ *"command": "\(.*\)",$/\1/p' |
+        sed 's/ -o [^ ]*/ -o \/dev\/null/')
+    if [ -z "$cmd" ]; then
+        echo "$1: not in $db"
+        return 1
+    fi
+    (cd "$build" && eval "$cmd -fanalyzer")
+}
+if [ "${1:-}" = --analyse ]; then # a worker of the gcc -fanalyzer step below
+    analyse "$2"
+    exit
+fi
 
 # The compile commands of the real build (include paths, defines, the
 # project's warnings) come from CMake's compile_commands.json; nothing is
 # built.
 cmake -S "$top" -B "$build" -DCMAKE_C_COMPILER="$gcc" -DCMAKE_BUILD_TYPE=Debug >/dev/null
-db="$build/compile_commands.json"
 
-echo "--- cppcheck"
+# cppcheck runs on one core in the background while clang-tidy and gcc
+# -fanalyzer share the cores (cppcheck took 54 s of CPU alone; its own -j
+# would leave out the whole-program checks without a build folder); its lines
+# are shown at the end.
 # shellcheck disable=SC2086
-if ! "$cppcheck" --std=c99 --enable=warning,style,performance,portability --inline-suppr \
+"$cppcheck" --std=c99 --enable=warning,style,performance,portability --inline-suppr \
     --error-exitcode=1 --quiet -UZL_CONFIG_HEADER -D__GNUC__ \
-    --suppressions-list=tools/lint/cppcheck-suppressions.txt $inc core/src port/host; then
-    status=1
-fi
+    --suppressions-list=tools/lint/cppcheck-suppressions.txt $inc core/src port/host >"$build/cppcheck.log" 2>&1 &
+cppcheck_pid=$!
 
 echo "--- clang-tidy"
 # clang-tidy analyses a file once per compile command of it, and the tests
@@ -76,19 +92,14 @@ if ! printf '%s\n' $files | xargs -P "$jobs" -I{} sh -c \
 fi
 
 echo "--- gcc -fanalyzer (port/host)"
-for f in port/host/*.c; do
-    # the file's own compile command, its output sent nowhere
-    cmd=$(grep -B1 "\"file\": \"$top/$f\"" "$db" | sed -n 's/^ *"command": "\(.*\)",$/\1/p' |
-        sed 's/ -o [^ ]*/ -o \/dev\/null/')
-    if [ -z "$cmd" ]; then
-        echo "$f: not in $db"
-        status=1
-        continue
-    fi
-    if ! (cd "$build" && eval "$cmd -fanalyzer"); then
-        status=1
-    fi
-done
+# JOBS files at a time (xargs -P: each a worker, this script with --analyse).
+if ! printf '%s\n' port/host/*.c | xargs -P "$jobs" -I{} sh "$top/tools/lint/run.sh" --analyse {}; then
+    status=1
+fi
+
+echo "--- cppcheck"
+wait $cppcheck_pid || status=1
+cat "$build/cppcheck.log"
 
 [ $status -eq 0 ] && echo "--- static analysis: no findings"
 exit $status

@@ -18,12 +18,15 @@ Usage:
   python3 tools/mutation/mutate.py                  # every mutation
   python3 tools/mutation/mutate.py --sample 3       # 3, chosen by --seed
   python3 tools/mutation/mutate.py --markdown       # the table for docs/
+  python3 tools/mutation/mutate.py --sample 3 --reuse-build build/ci-host
+                                                    # CI: start from the host stage's build
 Exit status: 1 when a mutation survived or is stale, else 0.
 """
 import argparse
 import datetime
 import os
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -63,6 +66,56 @@ def copy_tree(dst):
             return [n for n in names if n.startswith("build") or n in (".git", "out")]
         return []
     shutil.copytree(ROOT, dst, ignore=ignore, symlinks=True)
+
+
+def cache_value(build, name):
+    with open(os.path.join(build, "CMakeCache.txt"), encoding="utf-8") as f:
+        for line in f:
+            if line.startswith(name + ":"):
+                return line.split("=", 1)[1].rstrip("\n")
+    return ""
+
+
+def reuse_build(old_build, tree, build):
+    """BUILD: a copy of OLD_BUILD, a build of ROOT, whose absolute paths
+    (Makefiles, dependency lists, CMake's cache, CTest's files) are re-pointed
+    at TREE and BUILD. Every file keeps its time stamps, as copy_tree's files
+    do, so make finds the copy up to date and rebuilds only what a mutation
+    touches: the baseline then costs no build (CI's host stage has just built
+    and tested the same tree, in Release). Binary files (objects, programs)
+    are copied as they are. Returns an error message or ""."""
+    old_src = cache_value(old_build, "CMAKE_HOME_DIRECTORY")
+    old_bin = cache_value(old_build, "CMAKE_CACHEFILE_DIR")
+    if not old_src or os.path.realpath(old_src) != os.path.realpath(ROOT):
+        return "%s is not a build of %s (its source: %r)" % (old_build, ROOT, old_src)
+    if cache_value(old_build, "CMAKE_BUILD_TYPE") != "Release":
+        return "%s is not a Release build" % old_build
+    def special(path, names):  # a test's FIFOs and sockets: scratch files it makes again
+        return [n for n in names
+                if not os.path.islink(os.path.join(path, n)) and not os.path.isdir(os.path.join(path, n))
+                and not os.path.isfile(os.path.join(path, n))]
+    shutil.copytree(old_build, build, symlinks=True, ignore=special)
+    # the build folder first: it is inside the source folder
+    pattern = re.compile(b"(" + re.escape(old_bin.encode()) + b"|" + re.escape(old_src.encode()) + b")(?![\\w.+-])")
+    new = {old_bin.encode(): build.encode(), old_src.encode(): tree.encode()}
+    for dirpath, _, files in os.walk(build):
+        for name in files:
+            path = os.path.join(dirpath, name)
+            if os.path.islink(path):
+                target = os.readlink(path)
+                if pattern.match(target.encode()):
+                    os.remove(path)
+                    os.symlink(pattern.sub(lambda m: new[m.group(1)], target.encode()).decode(), path)
+                continue
+            with open(path, "rb") as f:
+                data = f.read()
+            if b"\0" in data or not pattern.search(data):
+                continue  # binary, or no path of the old trees
+            st = os.stat(path)
+            with open(path, "wb") as f:
+                f.write(pattern.sub(lambda m: new[m.group(1)], data))
+            os.utime(path, ns=(st.st_atime_ns, st.st_mtime_ns))
+    return ""
 
 
 def run(cmd, cwd, timeout):
@@ -107,6 +160,9 @@ def main():
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("JOBS", "2")))
     ap.add_argument("--markdown", action="store_true", help="print the result as a Markdown table")
     ap.add_argument("--keep", action="store_true", help="keep the temporary tree (for debugging)")
+    ap.add_argument("--reuse-build", default="",
+                    help="a Release build of this tree (CI: build/ci-host): copied for the baseline instead of a "
+                         "build from nothing; its ZLINE_SHARED_DIR is kept (the copy's ../shared is --shared)")
     ap.add_argument("--shared", default=os.path.join(os.path.dirname(ROOT), "shared"), help="ZLINE_SHARED_DIR")
     ap.add_argument("--check-current", action="store_true",
                     help="only check that every mutation's text is still in the tree, once (no build): "
@@ -124,8 +180,15 @@ def main():
     results = []
     try:
         copy_tree(tree)
-        rc, out = run(["cmake", "-S", tree, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
-                       "-DZLINE_SHARED_DIR=" + args.shared], tree, 600)
+        # the copy's ../shared, as the tree's: a build configured from the tree
+        # names ZLINE_SHARED_DIR as <tree>/../shared
+        os.symlink(os.path.abspath(args.shared), os.path.join(tmp, "shared"))
+        if args.reuse_build:
+            error = reuse_build(os.path.abspath(args.reuse_build), tree, build)
+            rc, out = (2, "mutate: --reuse-build: " + error) if error else (0, "")
+        else:
+            rc, out = run(["cmake", "-S", tree, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                           "-DZLINE_SHARED_DIR=" + args.shared], tree, 600)
         if rc == 0:
             rc, out = run(["cmake", "--build", build, "-j", str(args.jobs)], tree, 1800)
         if rc != 0:
@@ -154,8 +217,13 @@ def main():
                 if rc != 0:
                     verdict, by = "killed", "(does not build)"
                 else:
+                    # A mutant is killed by its first failing test: without --markdown
+                    # (whose table names the killers) CTest stops there. A survivor still
+                    # passes every test: the verdict is the same, only the list is shorter.
+                    stop = [] if args.markdown else ["--stop-on-failure"]
                     rc, out = run(["ctest", "--test-dir", build, "-j", str(args.jobs), "-E", args.exclude,
-                                   "--timeout", "120"] + (["-R", args.tests] if args.tests else []), tree, 3600)
+                                   "--timeout", "120"] + stop + (["-R", args.tests] if args.tests else []), tree,
+                                  3600)
                     names = failed_tests(out)
                     verdict = "killed" if rc != 0 else "survived"
                     by = ", ".join(names[:3]) + (" ..." if len(names) > 3 else "")

@@ -82,9 +82,22 @@ code_bytes() {
 }
 kb() { awk -v b="$1" 'BEGIN { printf "%.1f", b / 1024 }'; }
 
-echo "| configuration | target | -Os (bytes) | -Os (KB) | -O2 (bytes) | -O2 (KB) |"
-echo "|---|---|---:|---:|---:|---:|"
+# The targets' rows are computed at once, JOBS of them (default 2, the cores
+# of CI's machine) at a time: each target in a background job with its own
+# work folder, its rows into $rows_dir/INDEX (and INDEX.ok once complete),
+# printed in the table's order when all are done. (One after the other:
+# config_size_table took 148 s in the host stage of the last CI run.)
+jobs=${JOBS:-2}
+rows_dir=$work/rows
+rm -rf "$rows_dir" && mkdir -p "$rows_dir"
+target_root=$work
+i=0
 while read -r name prefix emulation flags; do
+    i=$((i + 1))
+    # a free slot: the job JOBS rows back has finished
+    [ "$i" -le "$jobs" ] || wait "$(cat "$rows_dir/$((i - jobs)).pid")" || :
+    (
+    work=$target_root/target-$i
     configs="all-on minimal"
     [ "$name" = Cortex-M0+ ] && configs="$configs minimal-small"
     for config in $configs; do
@@ -117,9 +130,26 @@ while read -r name prefix emulation flags; do
             echo "| $row | $name | $os | $(kb "$os") | $o2 | $(kb "$o2") |"
         done
     done
+    : >"$rows_dir/$i.ok"
+    ) <&- >"$rows_dir/$i" &
+    echo $! >"$rows_dir/$i.pid"
 done <<EOF2
 Cortex-M0+ arm-none-eabi- - -mcpu=cortex-m0plus -mthumb
 Cortex-M4 arm-none-eabi- - -mcpu=cortex-m4 -mthumb
 rv32imc riscv64-unknown-elf- elf32lriscv -march=rv32imc_zicsr -mabi=ilp32 --specs=picolibc.specs
 ATmega2560 avr- - -mmcu=atmega2560
 EOF2
+wait
+n=$i
+i=0
+while [ "$i" -lt "$n" ]; do
+    i=$((i + 1))
+    [ -e "$rows_dir/$i.ok" ] || { echo "config-size.sh: the rows of target $i failed" >&2; exit 1; }
+done
+echo "| configuration | target | -Os (bytes) | -Os (KB) | -O2 (bytes) | -O2 (KB) |"
+echo "|---|---|---:|---:|---:|---:|"
+i=0
+while [ "$i" -lt "$n" ]; do
+    i=$((i + 1))
+    cat "$rows_dir/$i"
+done
