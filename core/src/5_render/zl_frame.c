@@ -176,10 +176,11 @@ static int culled_area_sign(const zl_state *st)
 static unsigned mesh_flags(const zl_frame *f, const zl_frame_mesh *m, const zl_style *sty)
 {
     const zl_span_state *ss = &m->span;
-    int row565 = ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 &&
-                 ss->keep[1] == 0 && (ss->func == ZL_LESS || ss->func == ZL_LEQUAL);
+    int row565;
     if (!ZL_FAST_PATHS) /* off (zl_config.h): every triangle takes activate's general set-up, the same pixels */
         return 0;
+    row565 = ss->format == ZL_FORMAT_RGB565 && ss->bpp == 2 && ss->zwrite && ss->keep[0] == 0 && ss->keep[1] == 0 &&
+             (ss->func == ZL_LESS || ss->func == ZL_LEQUAL);
     if (sty != NULL && (sty->polygon_front != ZL_POLY_FILL || sty->polygon_back != ZL_POLY_FILL ||
                         sty->offset_factor != 0 || sty->offset_units != 0 || sty->toon_bands != 0 ||
                         zl_style_planes(sty)))

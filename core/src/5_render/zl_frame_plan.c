@@ -624,7 +624,9 @@ zl_status zl_frame_plan(zl_frame *f)
      * which then need no second classification. */
     p.diff = (int32_t *)(void *)f->pool;
     p.key_a = (uint16_t *)(void *)(pool + diff_bytes);
-    p.na = l.at[L_EXT] - l.at[L_POOL] > diff_bytes ? (uint32_t)((l.at[L_EXT] - l.at[L_POOL] - diff_bytes) / sizeof(uint16_t)) : 0;
+    p.na = l.at[L_EXT] - l.at[L_POOL] > diff_bytes
+               ? (uint32_t)((l.at[L_EXT] - l.at[L_POOL] - diff_bytes) / sizeof(uint16_t))
+               : 0;
     p.key_b = (uint16_t *)(void *)(pool + (l.at[L_TEX] - l.at[L_POOL]));
     p.nb = (uint32_t)((l.at[L_TOTAL] - l.at[L_TEX]) / sizeof(uint16_t));
     if (window) { /* no bit array: a part's keys rarely run out */

@@ -675,8 +675,8 @@ static ZL_NOINLINE zl_status next_band_over(zl_frame *f, zl_band *band)
  * frame: every frame is planned as over capacity's are, a window of bands
  * at a time (a frame that fits is one window), so the planning of
  * zl_frame_plan.c and the band loop below are not in flash. The same
- * pixels, needs and errors; planning classifies every primitive four times
- * instead of once or twice. */
+ * pixels, needs and errors; planning classifies every primitive twice
+ * (count, place) where zl_frame_plan classifies once or twice. */
 static ZL_NOINLINE zl_status next_band_compact(zl_frame *f, zl_band *band)
 {
     if (f->depth_band == NULL) /* a zeroed zl_frame, never begun */

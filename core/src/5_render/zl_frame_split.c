@@ -90,7 +90,8 @@ zl_status zl_frame_split(zl_frame *f, zl_frame *second, void *work, size_t work_
     second->tex = f->cfg.textured ? w + (l.at[L_TEX] - l.at[L_ROW_START]) : NULL;
     second->depth_band = (uint16_t *)(void *)(w + (l.at[L_DEPTH] - l.at[L_ROW_START]));
     second->color_band[0] = w + (l.at[L_COLOR0] - l.at[L_ROW_START]);
-    second->color_band[1] = f->cfg.color_buffers == 2 ? w + (l.at[L_COLOR1] - l.at[L_ROW_START]) : second->color_band[0];
+    second->color_band[1] =
+        f->cfg.color_buffers == 2 ? w + (l.at[L_COLOR1] - l.at[L_ROW_START]) : second->color_band[0];
     f->part = 1;
     second->part = 2;
     f->split_row = second->split_row = split_row;
