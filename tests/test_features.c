@@ -3,7 +3,7 @@
  * The feature switches of zl_config.h (issue 23). Built against the default
  * library (every feature on) and against the minimal configuration
  * (test_features_minimal: ZL_FEATURE_TEXTURES, _BLEND, _LINES, _OUTLINES,
- * _EXACT_DEPTH, _LIGHTING, _OFFSET, _DEPTH_FUNCS, _FORMATS, _SPLIT all 0). For each
+ * _DEPTH_MAP, _EXACT_DEPTH, _LIGHTING, _OFFSET, _DEPTH_FUNCS, _FORMATS, _SPLIT all 0). For each
  * switch, the API that needs the feature returns ZL_ERR_UNSUPPORTED exactly
  * when the feature is compiled out, in frame mode and in scanline mode, and
  * writes no pixel then; what stays (a flat and a Gouraud triangle, RGB565,
@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "zline/zl_camera.h"
 #include "zline/zline.h"
 #include "zt_frame.h"
 #include "zt_target.h"
@@ -149,10 +150,32 @@ static void set_always(zl_state *s)
     s->depth_func = ZL_ALWAYS; /* kept with the other functions off: it costs nothing */
 }
 
+static void set_depth_map(zl_state *s)
+{
+    s->near_z = ZL_FX_ONE / 4; /* the exact mapping's planes (ignored in pixel space when on) */
+    s->far_z = 16 * ZL_FX_ONE;
+}
+
+/* A perspective camera's depth planes go to the state only with the
+ * mapping compiled in; off, the state keeps z / w (near_z = far_z = 0). */
+static void test_camera_depth(void)
+{
+    zl_camera cam;
+    zl_state st;
+    zl_camera_init(&cam);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_camera_perspective(&cam, ZL_ANGLE_TURN / 8, ZL_FX_ONE, ZL_FX_ONE / 4, 16 * ZL_FX_ONE));
+    zl_state_default(&st);
+    zl_camera_apply_depth(&cam, &st);
+    TEST_ASSERT_EQUAL_INT32(ZL_FEATURE_DEPTH_MAP ? ZL_FX_ONE / 4 : 0, st.near_z);
+    TEST_ASSERT_EQUAL_INT32(ZL_FEATURE_DEPTH_MAP ? 16 * ZL_FX_ONE : 0, st.far_z);
+    TEST_ASSERT_EQUAL_INT(ZL_OK, zl_state_check(&st));
+}
+
 static void test_states(void)
 {
     zl_state st;
     check_state(set_light, ZL_FEATURE_LIGHTING);
+    check_state(set_depth_map, ZL_FEATURE_DEPTH_MAP);
     check_state(set_notequal, ZL_FEATURE_DEPTH_FUNCS);
     check_state(set_always, 1);
     /* with the depth test off the function is not used: any is accepted */
@@ -388,6 +411,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_styles);
     RUN_TEST(test_states);
+    RUN_TEST(test_camera_depth);
     RUN_TEST(test_formats);
     RUN_TEST(test_split);
     RUN_TEST(test_less_and_lequal);

@@ -54,7 +54,9 @@ zl_status zl_camera_look_at(zl_camera *cam, zl_vec3 eye, zl_vec3 target, zl_vec3
  * NULL cam or mvp. */
 zl_status zl_camera_mvp(const zl_camera *cam, const zl_mat4 *model, zl_mat4 *mvp);
 /* st->near_z, far_z from the camera (the exact depth mapping of a
- * perspective camera; 0, 0 for an orthographic one). */
+ * perspective camera; 0, 0 for an orthographic one). Without
+ * ZL_FEATURE_DEPTH_MAP (zl_config.h) st is left as it is: the depth is the
+ * matrix's z / w. */
 void zl_camera_apply_depth(const zl_camera *cam, zl_state *st);
 
 /* zl_draw_mesh with the camera's matrix for this model (computed into

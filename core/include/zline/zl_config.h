@@ -168,6 +168,13 @@
  *                        polygon modes LINE and POINT, antialiased lines
  *   ZL_FEATURE_OUTLINES  outlines (zl_draw_outlines, zl_frame_add_outlines;
  *                        zl_mesh_edges finds no edge)
+ *   ZL_FEATURE_DEPTH_MAP the exact depth mapping (zl_state near_z, far_z:
+ *                        each vertex's depth from its w, zline.h
+ *                        Pseudodepth): off, a state with near_z or far_z
+ *                        set is refused (zl_state_check), a camera's depth
+ *                        planes are not applied (zl_camera.h), and the
+ *                        depth is the matrix's z / w. Needs to be on for
+ *                        ZL_FEATURE_EXACT_DEPTH.
  *   ZL_FEATURE_EXACT_DEPTH  with the exact depth mapping (zl_state near_z,
  *                        far_z), the depth plane through the unsnapped
  *                        vertices (issue 22: within +-1 of exact at every
@@ -214,8 +221,11 @@
 #ifndef ZL_FEATURE_OUTLINES
 #define ZL_FEATURE_OUTLINES 1
 #endif
+#ifndef ZL_FEATURE_DEPTH_MAP
+#define ZL_FEATURE_DEPTH_MAP 1
+#endif
 #ifndef ZL_FEATURE_EXACT_DEPTH
-#define ZL_FEATURE_EXACT_DEPTH 1
+#define ZL_FEATURE_EXACT_DEPTH ZL_FEATURE_DEPTH_MAP
 #endif
 #ifndef ZL_FEATURE_LIGHTING
 #define ZL_FEATURE_LIGHTING 1
@@ -237,8 +247,12 @@
     (ZL_FEATURE_EXACT_DEPTH != 0 && ZL_FEATURE_EXACT_DEPTH != 1) ||                                              \
     (ZL_FEATURE_LIGHTING != 0 && ZL_FEATURE_LIGHTING != 1) || (ZL_FEATURE_OFFSET != 0 && ZL_FEATURE_OFFSET != 1) || \
     (ZL_FEATURE_DEPTH_FUNCS != 0 && ZL_FEATURE_DEPTH_FUNCS != 1) ||                                              \
-    (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1) || (ZL_FEATURE_SPLIT != 0 && ZL_FEATURE_SPLIT != 1)
+    (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1) || (ZL_FEATURE_SPLIT != 0 && ZL_FEATURE_SPLIT != 1) || \
+    (ZL_FEATURE_DEPTH_MAP != 0 && ZL_FEATURE_DEPTH_MAP != 1)
 #error "each ZL_FEATURE_* must be 0 or 1"
+#endif
+#if ZL_FEATURE_EXACT_DEPTH && !ZL_FEATURE_DEPTH_MAP
+#error "ZL_FEATURE_EXACT_DEPTH needs ZL_FEATURE_DEPTH_MAP (the exact plane is the mapping's)"
 #endif
 
 /*
@@ -251,7 +265,7 @@
      ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4) |                      \
      ((unsigned)ZL_FEATURE_LIGHTING << 5) | ((unsigned)ZL_FEATURE_OFFSET << 6) |                           \
      ((unsigned)ZL_FEATURE_DEPTH_FUNCS << 7) | ((unsigned)ZL_FEATURE_FORMATS << 8) |                      \
-     ((unsigned)ZL_FEATURE_SPLIT << 9))
+     ((unsigned)ZL_FEATURE_SPLIT << 9) | ((unsigned)ZL_FEATURE_DEPTH_MAP << 10))
 
 /*
  * ZL_MESH_READ_FIXED(p), ZL_MESH_READ_U16(p), ZL_MESH_READ_U8(p): how the

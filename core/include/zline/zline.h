@@ -350,7 +350,8 @@ typedef struct {
     /* Exact depth mapping (see Pseudodepth): the near and far planes given
      * to zl_mat4_perspective for the matrix (Q16.16, 0 < near_z < far_z),
      * or both 0 (the default: window depth is z_clip / w_clip). Ignored in
-     * pixel space. Leave them 0 for an orthographic or any other matrix. */
+     * pixel space. Leave them 0 for an orthographic or any other matrix.
+     * Without ZL_FEATURE_DEPTH_MAP (zl_config.h) they must stay 0. */
     zl_fixed near_z, far_z;
 } zl_state;
 
@@ -361,7 +362,8 @@ void zl_state_default(zl_state *s);
 /* ZL_ERR_ARG when an enum field is out of range; ZL_ERR_RANGE when light_on
  * is set and a light_dir component is outside +-1.0, or when near_z and
  * far_z are not both 0 and not 0 < near_z < far_z; ZL_ERR_UNSUPPORTED for
- * light_on set without ZL_FEATURE_LIGHTING, or (depth_test set) a
+ * light_on set without ZL_FEATURE_LIGHTING, near_z or far_z set without
+ * ZL_FEATURE_DEPTH_MAP, or (depth_test set) a
  * depth_func other than LESS, LEQUAL and ALWAYS without
  * ZL_FEATURE_DEPTH_FUNCS (zl_config.h). */
 zl_status zl_state_check(const zl_state *s);

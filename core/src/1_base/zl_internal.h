@@ -66,6 +66,10 @@ typedef struct {
                            (state near_z, far_z), or ZL_ZD_NONE: z / w */
 } zl_cvert;
 #define ZL_ZD_NONE 0xFFFFFFFFu
+/* Does state st (not NULL) ask for the exact depth mapping (near_z, far_z)?
+ * Always 0 when ZL_FEATURE_DEPTH_MAP is off (zl_config.h; zl_state_check
+ * refuses such a state then): the mapping's code is unreachable and goes. */
+#define ZL_DEPTH_MAPPED(st) (ZL_FEATURE_DEPTH_MAP && (st)->far_z != 0)
 
 /* Cached window vertex of scanline mode: 12 bytes, 8 without
  * ZL_FEATURE_EXACT_DEPTH. x == ZL_CACHE_COMPLEX marks a

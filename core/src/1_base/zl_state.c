@@ -32,7 +32,7 @@ zl_status zl_state_check(const zl_state *s)
         s->shading > ZL_SHADE_GOURAUD || s->color_mask > ZL_MASK_RGB || s->depth_test > 1 ||
         s->depth_write > 1 || s->light_on > 1)
         return ZL_ERR_ARG;
-    if ((!ZL_FEATURE_LIGHTING && s->light_on) ||
+    if ((!ZL_FEATURE_LIGHTING && s->light_on) || (!ZL_FEATURE_DEPTH_MAP && (s->near_z != 0 || s->far_z != 0)) ||
         (!ZL_FEATURE_DEPTH_FUNCS && s->depth_test && s->depth_func != ZL_LESS && s->depth_func != ZL_LEQUAL &&
          s->depth_func != ZL_ALWAYS))
         return ZL_ERR_UNSUPPORTED; /* compiled out (zl_config.h) */

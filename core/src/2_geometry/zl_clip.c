@@ -155,7 +155,7 @@ int zl_tri_polygon_geom(const zl_source *s, const zl_style *sty, uint32_t t, zl_
     }
     ok = polygon_clipped(s, idx, out);
     if (ok && !out->clipped) {
-        if (s->mvp != NULL && s->state != NULL && s->state->far_z != 0)
+        if (s->mvp != NULL && s->state != NULL && ZL_DEPTH_MAPPED(s->state))
             poly_residuals(s, idx, out);
         else /* no exact mapping: the snapped plane (zl_vertex_residuals' answer, without the calls) */
             out->fx[0] = out->fx[1] = out->fx[2] = ZL_FINE_NONE;

@@ -429,7 +429,7 @@ int zl_tri_orig_depths3(const zl_source *s, uint32_t t, const int32_t x[3], cons
     hsolve h;
     int32_t zc[3], w[3];
     uint16_t rgb[3][3];
-    int exact = s->mvp != NULL && s->state->far_z != 0;
+    int exact = s->mvp != NULL && ZL_DEPTH_MAPPED(s->state);
     if (!solve_of(s, t, 0, 0, &h, zc, w, rgb))
         return 0;
     depths3(&h, zc, exact ? s->state->near_z : 0, exact ? s->state->far_z : 0, x, y, z);
@@ -447,7 +447,7 @@ int zl_tri_orig_planes(const zl_source *s, uint32_t t, int32_t ax, int32_t ay, i
     int done = 1;
     if (!solve_of(s, t, ax, ay, &h, zc, w, rgb))
         return 0;
-    if (s->mvp != NULL && s->state->far_z != 0) {
+    if (s->mvp != NULL && ZL_DEPTH_MAPPED(s->state)) {
         exact_depth_plane(z, &h, s->state->near_z, s->state->far_z);
     } else {
         /* z_w = z_clip / w = sum z_i b_i, stored scale 65535, Q20 */

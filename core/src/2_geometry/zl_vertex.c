@@ -126,7 +126,7 @@ static int64_t transform_sum(const zl_mat4 *m, int r, const zl_fixed *p)
 void zl_vertex_residuals(const zl_source *s, uint16_t idx, const zl_wvert *w, int16_t *fx, int16_t *fy)
 {
     *fx = *fy = ZL_FINE_NONE;
-    if (ZL_FEATURE_EXACT_DEPTH && s->mvp != NULL && s->state != NULL && s->state->far_z != 0) { /* the exact mapping only */
+    if (ZL_FEATURE_EXACT_DEPTH && s->mvp != NULL && s->state != NULL && ZL_DEPTH_MAPPED(s->state)) { /* the exact mapping only */
         const zl_fixed *p = &s->mesh->positions[idx * 3u];
         int64_t ws = transform_sum(s->mvp, 3, p), xs = transform_sum(s->mvp, 0, p), ys = transform_sum(s->mvp, 1, p);
         *fx = fine_residual(xs, ws, s->width * (uint32_t)(ZL_SUB_ONE / 2), xs < 0, w->x);
@@ -149,7 +149,7 @@ int zl_vertex_clip(const zl_source *s, uint16_t idx, zl_cvert *out)
         out->y = c.y;
         out->z = c.z;
         out->w = c.w;
-        out->zd = s->state != NULL && s->state->far_z != 0 ? vertex_exact_depth(s, p) : ZL_ZD_NONE;
+        out->zd = s->state != NULL && ZL_DEPTH_MAPPED(s->state) ? vertex_exact_depth(s, p) : ZL_ZD_NONE;
     } else {
         out->x = v.x;
         out->y = v.y;
@@ -347,7 +347,7 @@ static int vx_prepare(const zl_source *s, vx_setup *vs)
     vs->hx = s->width * (uint32_t)(ZL_SUB_ONE / 2);
     vs->hy = s->height * (uint32_t)(ZL_SUB_ONE / 2);
     vs->pfast = fast_bound(vs);
-    vs->exact = s->state != NULL && s->state->far_z != 0 ? s->state : NULL;
+    vs->exact = s->state != NULL && ZL_DEPTH_MAPPED(s->state) ? s->state : NULL;
     /* See vx_fast: x inside its planes and window x in [INT16_MIN + 2,
      * INT16_MAX] when q < hx + G 2^SUB and q < 32767 - hx; y likewise with
      * [INT16_MIN, INT16_MAX]. */

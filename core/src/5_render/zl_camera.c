@@ -82,7 +82,7 @@ ZL_NOINLINE zl_status zl_camera_mvp(const zl_camera *cam, const zl_mat4 *model, 
 
 void zl_camera_apply_depth(const zl_camera *cam, zl_state *st)
 {
-    if (cam == NULL || st == NULL)
+    if (cam == NULL || st == NULL || !ZL_FEATURE_DEPTH_MAP) /* off: the matrix's z / w (zl_config.h) */
         return;
     st->near_z = cam->near_z;
     st->far_z = cam->far_z;
