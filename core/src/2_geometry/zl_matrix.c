@@ -72,39 +72,43 @@ void zl_mat4_rotate_z(zl_mat4 *out, zl_angle a)
     rotate_plane(out, 0, 1, a);
 }
 
+/* The vectors of zl_mat4_look_at as three components each (loops over them
+ * are a third of the code of the unrolled struct forms on a Cortex-M0). */
+
 /* Unit vector along v, Q16.16; ZL_ERR_RANGE for the zero vector. */
-static zl_status normalize(zl_vec3 v, zl_vec3 *out)
+static zl_status normalize(const zl_fixed *v, zl_fixed *out)
 {
-    uint64_t sq = (uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) +
-                  (uint64_t)((int64_t)v.z * v.z);
-    int64_t len = zl_isqrt64(sq); /* |v| in Q16.16 units */
+    uint64_t sq = 0;
+    int64_t len;
+    int k;
+    for (k = 0; k < 3; k++)
+        sq += (uint64_t)((int64_t)v[k] * v[k]);
+    len = zl_isqrt64(sq); /* |v| in Q16.16 units */
     if (len == 0)
         return ZL_ERR_RANGE;
-    out->x = (zl_fixed)zl_round_div64((int64_t)v.x * 65536, len);
-    out->y = (zl_fixed)zl_round_div64((int64_t)v.y * 65536, len);
-    out->z = (zl_fixed)zl_round_div64((int64_t)v.z * 65536, len);
+    for (k = 0; k < 3; k++)
+        out[k] = (zl_fixed)zl_round_div64((int64_t)v[k] * 65536, len);
     return ZL_OK;
 }
 
-static zl_fixed cross_component(zl_fixed a1, zl_fixed b2, zl_fixed a2, zl_fixed b1)
+/* r = a x b, each component rounded and saturated. */
+static void cross(const zl_fixed *a, const zl_fixed *b, zl_fixed *r)
 {
-    return zl_fx_sat(zl_floor_shift64((int64_t)a1 * b2 - (int64_t)a2 * b1 + 32768, 16));
-}
-
-static zl_vec3 cross(zl_vec3 a, zl_vec3 b)
-{
-    zl_vec3 r;
-    r.x = cross_component(a.y, b.z, a.z, b.y);
-    r.y = cross_component(a.z, b.x, a.x, b.z);
-    r.z = cross_component(a.x, b.y, a.y, b.x);
-    return r;
+    int k;
+    for (k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        r[k] = zl_fx_sat(zl_floor_shift64((int64_t)a[i] * b[j] - (int64_t)a[j] * b[i] + 32768, 16));
+    }
 }
 
 /* a . b rounded; ZL_ERR_RANGE when it leaves +-32767.99998 (so that its
  * negation fits as well). */
-static zl_status dot(zl_vec3 a, zl_vec3 b, zl_fixed *out)
+static zl_status dot(const zl_fixed *a, const zl_fixed *b, zl_fixed *out)
 {
-    int64_t d = (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+    int64_t d = 0;
+    int k;
+    for (k = 0; k < 3; k++)
+        d += (int64_t)a[k] * b[k];
     d = zl_floor_shift64(d + 32768, 16);
     if (d > INT32_MAX || d < -INT32_MAX)
         return ZL_ERR_RANGE;
@@ -114,40 +118,36 @@ static zl_status dot(zl_vec3 a, zl_vec3 b, zl_fixed *out)
 
 zl_status zl_mat4_look_at(zl_mat4 *out, zl_vec3 eye, zl_vec3 target, zl_vec3 up)
 {
-    zl_vec3 f, s, u, dir, up1;
-    int64_t dx = (int64_t)target.x - eye.x, dy = (int64_t)target.y - eye.y, dz = (int64_t)target.z - eye.z;
-    zl_fixed ts, tu, tf;
+    const zl_fixed e[3] = {eye.x, eye.y, eye.z}, t[3] = {target.x, target.y, target.z}, u[3] = {up.x, up.y, up.z};
+    zl_fixed axis[3][3], dir[3], up1[3], tr[3]; /* axis: s, u, f (the camera's x, y, -z) */
+    int r, k;
     if (out == NULL)
         return ZL_ERR_ARG;
     /* The view direction must be representable, and so must the translation
      * (the eye's distance from the origin along each camera axis). */
-    if (dx > INT32_MAX || dx < INT32_MIN || dy > INT32_MAX || dy < INT32_MIN || dz > INT32_MAX || dz < INT32_MIN)
-        return ZL_ERR_RANGE;
-    dir.x = (zl_fixed)dx;
-    dir.y = (zl_fixed)dy;
-    dir.z = (zl_fixed)dz;
+    for (k = 0; k < 3; k++) {
+        int64_t d = (int64_t)t[k] - e[k];
+        if (d > INT32_MAX || d < INT32_MIN)
+            return ZL_ERR_RANGE;
+        dir[k] = (zl_fixed)d;
+    }
     /* up is normalised first, so the cross product of two unit vectors
      * cannot saturate (a unit up gives itself back exactly). */
-    if (normalize(dir, &f) != ZL_OK || normalize(up, &up1) != ZL_OK)
+    if (normalize(dir, axis[2]) != ZL_OK || normalize(u, up1) != ZL_OK)
         return ZL_ERR_RANGE;
-    if (normalize(cross(f, up1), &s) != ZL_OK)
+    cross(axis[2], up1, dir);
+    if (normalize(dir, axis[0]) != ZL_OK)
         return ZL_ERR_RANGE;
-    u = cross(s, f);
-    if (dot(s, eye, &ts) != ZL_OK || dot(u, eye, &tu) != ZL_OK || dot(f, eye, &tf) != ZL_OK)
-        return ZL_ERR_RANGE;
+    cross(axis[0], axis[2], axis[1]);
+    for (r = 0; r < 3; r++)
+        if (dot(axis[r], e, &tr[r]) != ZL_OK)
+            return ZL_ERR_RANGE;
     zl_mat4_identity(out);
-    out->M(0, 0) = s.x;
-    out->M(0, 1) = s.y;
-    out->M(0, 2) = s.z;
-    out->M(0, 3) = -ts;
-    out->M(1, 0) = u.x;
-    out->M(1, 1) = u.y;
-    out->M(1, 2) = u.z;
-    out->M(1, 3) = -tu;
-    out->M(2, 0) = -f.x;
-    out->M(2, 1) = -f.y;
-    out->M(2, 2) = -f.z;
-    out->M(2, 3) = tf;
+    for (r = 0; r < 3; r++) { /* rows s, u, -f; translations -s.eye, -u.eye, f.eye */
+        for (k = 0; k < 3; k++)
+            out->M(r, k) = r == 2 ? -axis[r][k] : axis[r][k];
+        out->M(r, 3) = r == 2 ? tr[r] : -tr[r];
+    }
     return ZL_OK;
 }
 
