@@ -293,9 +293,10 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
  * (ARMv6-M: Cortex-M0/M0+), where libgcc's __aeabi_lmul costs about 40
  * instructions a product and a division 60 to 70: some hot paths then take
  * exact 32-bit forms of the same numbers (bit-identical results). A host
- * build may define ZL_MUL32_ONLY=1 to test those forms. */
+ * build may define ZL_MUL32_ONLY=1 to test those forms. Without the fast
+ * paths (ZL_FAST_PATHS=0, zl_config.h) those forms are speed alone: 0. */
 #ifndef ZL_MUL32_ONLY
-#if defined(__ARM_ARCH_6M__)
+#if defined(__ARM_ARCH_6M__) && ZL_FAST_PATHS
 #define ZL_MUL32_ONLY 1
 #else
 #define ZL_MUL32_ONLY 0

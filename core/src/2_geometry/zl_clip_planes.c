@@ -341,10 +341,11 @@ static ZL_NOINLINE int solve_of(const zl_source *s, uint32_t t, int32_t ax, int3
      * two products of Q16.16 numbers, below 2^63 in magnitude (at most one
      * of the products can reach 2^62). */
     for (i = 0; i < 3; i++) {
-        const int32_t *a = p[(i + 1) % 3], *b = p[(i + 2) % 3];
-        h->c[i][0] = (int64_t)a[1] * b[2] - (int64_t)a[2] * b[1];
-        h->c[i][1] = (int64_t)a[2] * b[0] - (int64_t)a[0] * b[2];
-        h->c[i][2] = (int64_t)a[0] * b[1] - (int64_t)a[1] * b[0];
+        const int32_t *a = p[NEXT3(i)], *b = p[NEXT3(NEXT3(i))];
+        for (k = 0; k < 3; k++) {
+            unsigned j = NEXT3(k), l = NEXT3(j);
+            h->c[i][k] = (int64_t)a[j] * b[l] - (int64_t)a[l] * b[j];
+        }
     }
     if (s->mvp != NULL) {
         h->vp.sx = s->height;

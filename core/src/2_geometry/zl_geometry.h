@@ -22,6 +22,10 @@ enum {
 
 #define COORD_LIMIT ((uint32_t)1 << 30) /* zl_matrix.c's limit: +-16384.0 */
 
+/* (k + 1) mod 3 for k in 0..2, without a division (a library call on
+ * Cortex-M0): the cyclic index of a cross product's loop. */
+#define NEXT3(k) ((k) == 2u ? 0u : (k) + 1u)
+
 /* Vertex colour channel k in Q8 (0 without vertex colours). */
 ZL_SHARED_STATIC int32_t color_q8(const zl_mesh *m, uint16_t idx, int k)
 {

@@ -90,9 +90,10 @@ static ZL_NOINLINE void large_normal(const zl_fixed *pos, const uint16_t *idx, i
     shift = shift_below(max_abs(e, 6), 30);
     for (k = 0; k < 6; k++)
         e[k] = zl_floor_shift64(e[k], shift);
-    n[0] = e[1] * e[5] - e[2] * e[4];
-    n[1] = e[2] * e[3] - e[0] * e[5];
-    n[2] = e[0] * e[4] - e[1] * e[3];
+    for (k = 0; k < 3; k++) { /* n = e[0..2] x e[3..5] */
+        unsigned i = NEXT3(k), j = NEXT3(i);
+        n[k] = e[i] * e[3 + j] - e[j] * e[3 + i];
+    }
     shift = shift_below(max_abs(n, 3), 14);
     for (k = 0; k < 3; k++)
         m[k] = (int32_t)zl_floor_shift64(n[k], shift);

@@ -94,9 +94,9 @@ static zl_status normalize(const zl_fixed *v, zl_fixed *out)
 /* r = a x b, each component rounded and saturated. */
 static void cross(const zl_fixed *a, const zl_fixed *b, zl_fixed *r)
 {
-    int k;
+    unsigned k;
     for (k = 0; k < 3; k++) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
+        unsigned i = NEXT3(k), j = NEXT3(i);
         r[k] = zl_fx_sat(zl_floor_shift64((int64_t)a[i] * b[j] - (int64_t)a[j] * b[i] + 32768, 16));
     }
 }

@@ -221,7 +221,7 @@ static ZL_ALWAYS_INLINE uint32_t depth_q16(uint32_t z, uint32_t w)
 {
     uint64_t n = ((uint64_t)z << 32) - ((uint64_t)z << 16) + (w >> 1); /* shifts: no multiply */
 #if defined(__ARM_FEATURE_IDIV) || !defined(__arm__) || ZL_MUL32_ONLY
-    if (w < (UINT32_C(1) << 20)) {
+    if (ZL_FAST_PATHS && w < (UINT32_C(1) << 20)) { /* off: the one division (zl_config.h) */
         uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r, q2, q1, q0;
         r = (hi << 12) | (lo >> 20); /* hi < w */
         q2 = r / w;

@@ -708,6 +708,11 @@ void zl_fill16(uint16_t *p, uint16_t v, uint32_t n)
     zl_fill_block b;
     uint32_t pair, k;
     uint16_t two[2];
+    if (!ZL_FAST_PATHS) { /* a pixel a step (zl_config.h) */
+        while (n-- > 0)
+            *p++ = v;
+        return;
+    }
     two[0] = v;
     two[1] = v;
     memcpy(&pair, two, 4);
