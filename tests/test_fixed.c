@@ -65,29 +65,39 @@ static void test_isqrt_is_exact_floor(void)
     TEST_ASSERT_EQUAL_INT(0, zl_fx_sqrt(-5));
 }
 
-/* Reference sine in integers: Taylor series in 64-bit fixed point (Q40),
- * independent of the table. */
+/* floor(a b / 2^60) for |a|, |b| < 2^62, from 32-bit halves (a unit or two
+ * of 2^-60 low: the truncated partial products). */
+static int64_t mul_q60(int64_t a, int64_t b)
+{
+    int neg = (a < 0) != (b < 0);
+    uint64_t ua = (uint64_t)(a < 0 ? -a : a), ub = (uint64_t)(b < 0 ? -b : b);
+    uint64_t ah = ua >> 32, al = ua & 0xFFFFFFFFu, bh = ub >> 32, bl = ub & 0xFFFFFFFFu;
+    uint64_t m = ah * bh * 16u + ((ah * bl + al * bh) >> 28) + ((al * bl) >> 60);
+    return neg ? -(int64_t)m : (int64_t)m;
+}
+
+/* Reference sine in integers: the Taylor series in Q60 (error below 2^-55,
+ * so round(65536 sin) is exact unless the value is that close to a
+ * rounding tie), independent of the core's table and polynomial. */
 static int64_t ref_sin_q16(int32_t a)
 {
-    /* x = a * 2 pi / 65536 in Q40; pi in Q40 = 3454217652358 */
-    const int64_t pi_q40 = 3454217652358LL;
-    int64_t x, term, sum;
+    const int64_t pi_q60 = INT64_C(3622009729038561421); /* pi 2^60, rounded */
+    int64_t x, x2, term, sum;
     int k;
     a &= 0xFFFF;
     if (a >= 32768)
         return -ref_sin_q16(a - 32768);
     if (a > 16384)
         a = 32768 - a;
-    x = (int64_t)a * (pi_q40 / 32768); /* a * 2pi/65536 */
+    x = (int64_t)a * (pi_q60 / 32768); /* a 2 pi / 65536, below 2^61 */
+    x2 = mul_q60(x, x);
     term = x;
     sum = x;
-    for (k = 1; k < 12; k++) {
-        /* term *= -x^2 / ((2k)(2k+1)), in Q40 with 128-bit-free splitting */
-        int64_t x2 = (x >> 20) * (x >> 20); /* Q40 */
-        term = -((term >> 20) * (x2 >> 20)) / ((2 * k) * (2 * k + 1));
+    for (k = 1; k < 16; k++) {
+        term = -mul_q60(term, x2) / ((2 * k) * (2 * k + 1));
         sum += term;
     }
-    return (sum + ((int64_t)1 << 23)) >> 24; /* Q40 -> Q16, rounded */
+    return (sum + ((int64_t)1 << 43)) >> 44; /* Q60 -> Q16, rounded */
 }
 
 static void test_sine_table_within_one_unit(void)
@@ -106,6 +116,11 @@ static void test_sine_table_within_one_unit(void)
         TEST_ASSERT_INT_WITHIN(1, ref_sin_q16(a + 16384), zl_cos(a));
     }
     TEST_ASSERT_LESS_OR_EQUAL(1, worst);
+    /* at the nodes (every 64 units of the first quarter) the sine is the
+     * exact value rounded, whether a table or (ZL_FAST_PATHS=0) a
+     * polynomial gives it: test_fixed_fast_paths_off */
+    for (a = 0; a <= 16384; a += 64)
+        TEST_ASSERT_EQUAL_INT64(ref_sin_q16(a), zl_sin(a));
     TEST_ASSERT_EQUAL_INT(0, zl_sin(0));
     TEST_ASSERT_EQUAL_INT(ZL_FX_ONE, zl_sin(16384));
     TEST_ASSERT_EQUAL_INT(-ZL_FX_ONE, zl_sin(49152));

@@ -18,10 +18,12 @@
 #define ZL_TABLE PROGMEM
 #define TABLE_U8(t, i) pgm_read_byte(&(t)[i])
 #define TABLE_U16(t, i) pgm_read_word(&(t)[i])
+#define TABLE_I32(t, i) ((int32_t)pgm_read_dword(&(t)[i]))
 #else
 #define ZL_TABLE
 #define TABLE_U8(t, i) ((t)[i])
 #define TABLE_U16(t, i) ((t)[i])
+#define TABLE_I32(t, i) ((t)[i])
 #endif
 
 zl_status zl_fx_mul_checked(zl_fixed a, zl_fixed b, zl_fixed *out)
@@ -215,10 +217,13 @@ zl_fixed zl_fx_sqrt(zl_fixed a)
     return (zl_fixed)zl_isqrt64((uint64_t)a << 16);
 }
 
+/* The sine at the nodes i = 0..256 of the first quarter (i quarter turns /
+ * 256), round(65536 sin) in Q16.16; node 256 is 1.0. */
+#define SIN_QUARTER_END 65536
+#if ZL_FAST_PATHS
 /* sin(i * quarter turn / 256) in Q16.16, i = 0..255 (generated, rounded);
  * i = 256 is 1.0 (SIN_QUARTER_END). Every entry below it fits 16 bits, so
  * the table takes 512 bytes of flash instead of 1,028 as int32_t. */
-#define SIN_QUARTER_END 65536
 static const uint16_t sin_quarter[256] ZL_TABLE = {
     0, 402, 804, 1206, 1608, 2010, 2412, 2814,
     3216, 3617, 4019, 4420, 4821, 5222, 5623, 6023,
@@ -254,6 +259,28 @@ static const uint16_t sin_quarter[256] ZL_TABLE = {
     65457, 65476, 65492, 65505, 65516, 65525, 65531, 65535,
 };
 
+#define sin_node(i) ((i) == 256 ? SIN_QUARTER_END : (int32_t)TABLE_U16(sin_quarter, i))
+#else
+/*
+ * Without the fast paths (zl_config.h) the nodes come from the Taylor
+ * polynomial of sin(pi t / 2), t = i / 256, to degree 13 in Q30 (Horner's
+ * rule, products below 2^62, floor shifts): the table's values exactly at
+ * every node (its error, below 2^-28, is far inside the 0.0034 by which the
+ * nearest node misses a rounding tie; tests/test_fixed.c checks each node
+ * against its own reference), in 28 bytes of coefficients instead of 512.
+ */
+static const int32_t sin_taylor_q30[7] ZL_TABLE = {1686629713, -693598668, 85569306, -5026995, 172272, -3864, 61};
+
+static int32_t sin_node(int32_t i)
+{
+    int64_t t = (int64_t)i * (1 << 22), t2 = zl_floor_shift64(t * t, 30), p = TABLE_I32(sin_taylor_q30, 6);
+    int k;
+    for (k = 5; k >= 0; k--)
+        p = TABLE_I32(sin_taylor_q30, k) + zl_floor_shift64(p * t2, 30);
+    return (int32_t)zl_floor_shift64(zl_floor_shift64(p * t, 30) + (1 << 13), 14);
+}
+#endif
+
 /* Sine of the first quarter: a in 0..16384 (16384 = 90 degrees). Linear
  * interpolation between table entries 64 angle units apart, rounded. */
 static zl_fixed sin_first_quarter(int32_t a)
@@ -263,8 +290,8 @@ static zl_fixed sin_first_quarter(int32_t a)
     int32_t lo, hi;
     if (i >= 256)
         return SIN_QUARTER_END;
-    lo = (int32_t)TABLE_U16(sin_quarter, i);
-    hi = i == 255 ? SIN_QUARTER_END : (int32_t)TABLE_U16(sin_quarter, i + 1);
+    lo = sin_node(i);
+    hi = sin_node(i + 1);
     return lo + (((hi - lo) * frac + 32) >> 6);
 }
 
