@@ -33,8 +33,10 @@ static ZL_NOINLINE unsigned prim_rows(const zl_frame *f, unsigned mi, uint32_t t
     zl_source s;
     zl_poly poly;
     unsigned k, n, pieces = 0;
-    int cached = zl_frame_rows_cached(f, mi, t, first, end);
-    if (cached >= 0) /* a filled triangle cached inside: one piece, or none */
+    /* a filled triangle cached inside: one piece, or none (without the fast
+     * paths the general classification below, the same rows: zl_config.h) */
+    int cached = ZL_FAST_PATHS ? zl_frame_rows_cached(f, mi, t, first, end) : -1;
+    if (cached >= 0)
         return (unsigned)cached;
     *first = INT16_MAX;
     *end = 0;
