@@ -269,6 +269,16 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #define ZL_NOINLINE
 #endif
 
+/* Out of line without the fast paths (ZL_FAST_PATHS=0, zl_config.h): a
+ * small helper of 64-bit arithmetic that -Os copies into each of its
+ * callers, where on Cortex-M0 each copy is libgcc calls and register moves;
+ * with the fast paths the compiler decides, as before. */
+#if ZL_FAST_PATHS
+#define ZL_SMALL_NOINLINE
+#else
+#define ZL_SMALL_NOINLINE ZL_NOINLINE
+#endif
+
 /* A static helper defined in a stage's internal header with no inline hint,
  * so each file that uses it gets the same inlining decision as when the
  * helper was in that file (the hint changes GCC's choice, and with it the

@@ -12,7 +12,7 @@
 
 #include "zl_geometry.h"
 
-static int32_t lerp(int32_t a, int32_t b, int64_t t30)
+static ZL_SMALL_NOINLINE int32_t lerp(int32_t a, int32_t b, int64_t t30)
 {
     return (int32_t)(a + zl_floor_shift64(((int64_t)b - a) * t30 + ((int64_t)1 << 29), 30));
 }

@@ -179,7 +179,7 @@ unsigned zl_outcode(const zl_source *s, const zl_cvert *v)
     return code;
 }
 
-static uint16_t color_out(int32_t c)
+static ZL_SMALL_NOINLINE uint16_t color_out(int32_t c)
 {
     if (c < 0)
         return 0;

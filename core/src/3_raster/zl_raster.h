@@ -68,7 +68,7 @@ ZL_SHARED_STATIC void edge_step(zl_edge *e)
     }
 }
 
-ZL_SHARED_STATIC int64_t clamp64(int64_t v, int64_t lo, int64_t hi)
+ZL_SHARED_STATIC ZL_SMALL_NOINLINE int64_t clamp64(int64_t v, int64_t lo, int64_t hi)
 {
     return v < lo ? lo : (v > hi ? hi : v);
 }

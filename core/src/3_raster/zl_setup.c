@@ -539,6 +539,12 @@ void zl_tri_setup_rows(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_s
                           end);
 }
 
+/* The reciprocal of plane_frame's cross product and its small-frame test
+ * serve the fast paths' plane divisions and the texture planes; without
+ * either (zl_config.h) they are not computed (plane_setup's general
+ * division takes every plane). */
+#define FRAME_EXTRAS (ZL_FAST_PATHS || ZL_FEATURE_TEXTURES || ZL_FEATURE_BLEND)
+
 void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const zl_style *sty, const zl_wvert *a,
                            const zl_wvert *b, const zl_wvert *c, const zl_poly *poly, const int16_t *res,
                            const zl_state *st, int32_t first, int32_t end)
@@ -589,13 +595,14 @@ void zl_tri_setup_rows_res(zl_active *t, zl_gouraud *g, zl_texplanes *tp, const 
     pf.c = cross;
     pf.inv = NULL;
     pf.c32 = 0;
-    if (cross != 0 && cross >= -(int64_t)UINT32_MAX && cross <= (int64_t)UINT32_MAX) {
+    if (FRAME_EXTRAS && cross != 0 && cross >= -(int64_t)UINT32_MAX && cross <= (int64_t)UINT32_MAX) {
         pf.c32 = (uint32_t)(cross < 0 ? -cross : cross);
         zl_div_inv_init(&inv, pf.c32);
         pf.inv = &inv;
     }
-    pf.small = pf.dx1 > -(INT32_C(1) << 17) && pf.dx1 < (INT32_C(1) << 17) && pf.dy1 < (INT32_C(1) << 17) && pf.dx2 > -(INT32_C(1) << 17) &&
-               pf.dx2 < (INT32_C(1) << 17) && pf.dy2 < (INT32_C(1) << 17); /* dy >= 0: the vertices are sorted by y */
+    pf.small = FRAME_EXTRAS && pf.dx1 > -(INT32_C(1) << 17) && pf.dx1 < (INT32_C(1) << 17) &&
+               pf.dy1 < (INT32_C(1) << 17) && pf.dx2 > -(INT32_C(1) << 17) && pf.dx2 < (INT32_C(1) << 17) &&
+               pf.dy2 < (INT32_C(1) << 17); /* dy >= 0: the vertices are sorted by y */
     pf.ax = (int32_t)zl_floor_shift64(v[0]->x, ZL_SUB_BITS);
     pf.ay = (int32_t)zl_floor_shift64(v[0]->y, ZL_SUB_BITS);
     pf.ox = (int64_t)pf.ax * ZL_SUB_ONE + ZL_SUB_HALF - v[0]->x;
