@@ -76,7 +76,7 @@ ZL_SHARED_STATIC ZL_SMALL_NOINLINE int64_t clamp64(int64_t v, int64_t lo, int64_
 /* Per-pixel step of a Q20 gradient as a 32-bit stepper of `frac` bits.
  * Only spans of 2+ pixels step, and there the gradient is bounded by the
  * value range, so the clamp never bites where it matters. */
-ZL_SHARED_STATIC uint32_t step32(int64_t d, unsigned shift)
+ZL_SHARED_STATIC ZL_SMALL_NOINLINE uint32_t step32(int64_t d, unsigned shift)
 {
     return (uint32_t)(int32_t)clamp64(zl_floor_shift64(d, shift), -((int64_t)1 << 30), (int64_t)1 << 30);
 }

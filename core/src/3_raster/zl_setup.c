@@ -21,7 +21,7 @@
 
 #include "zl_raster.h"
 
-static int64_t signed_area2(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c)
+static ZL_SMALL_NOINLINE int64_t signed_area2(const zl_wvert *a, const zl_wvert *b, const zl_wvert *c)
 {
     return ((int64_t)b->x - a->x) * ((int64_t)c->y - a->y) -
            ((int64_t)c->x - a->x) * ((int64_t)b->y - a->y);

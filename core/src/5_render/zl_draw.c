@@ -95,13 +95,14 @@ zl_status zl_clear(zl_context *ctx, zl_rgb color, uint16_t depth)
     zl_span_state_init(&ss, &ctx->state, 1, ctx->target.color != NULL, (zl_format)ctx->target.format,
                        ctx->target.width);
     /* Rows without gaps between them (stride = row bytes) are one run: a
-     * single fill, without the per-row set-up. */
+     * single fill, without the per-row set-up (without the fast paths,
+     * zl_config.h: row by row, the same bytes). */
     clear_depth = ctx->target.depth != NULL && ctx->state.depth_write;
-    if (clear_depth && ctx->target.depth_stride == (int32_t)ctx->target.width * 2) {
+    if (ZL_FAST_PATHS && clear_depth && ctx->target.depth_stride == (int32_t)ctx->target.width * 2) {
         zl_fill16(ctx->target.depth, depth, (uint32_t)ctx->target.width * ctx->target.height);
         clear_depth = 0;
     }
-    if (ss.bpp == 2 && ss.keep[0] == 0 && ss.keep[1] == 0 && ctx->target.format == ZL_FORMAT_RGB565 &&
+    if (ZL_FAST_PATHS && ss.bpp == 2 && ss.keep[0] == 0 && ss.keep[1] == 0 && ctx->target.format == ZL_FORMAT_RGB565 &&
         ctx->target.color_stride == (int32_t)ctx->target.width * 2) {
         uint8_t pix[3] = {0, 0, 0};
         uint16_t v;

@@ -77,7 +77,7 @@ static ZL_NOINLINE unsigned prim_rows(const zl_frame *f, unsigned mi, uint32_t t
 }
 
 /* Mesh record of primitive id, from record mi on (ids rise with records). */
-static unsigned mesh_from(const zl_frame *f, unsigned mi, uint32_t id)
+static ZL_SMALL_NOINLINE unsigned mesh_from(const zl_frame *f, unsigned mi, uint32_t id)
 {
     while (mi + 1u < f->mesh_count && id >= f->meshes[mi + 1u].tri_base)
         mi++;

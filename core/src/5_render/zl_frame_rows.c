@@ -9,6 +9,13 @@
 
 #include "zl_frame_internal.h"
 
+/* Bytes a pixel of the frame's format: 2 without ZL_FEATURE_FORMATS, where
+ * zl_frame_begin refuses RGB888 (a constant the compiler folds). */
+static size_t frame_bpp(const zl_frame *f)
+{
+    return ZL_FEATURE_FORMATS ? zl_format_bytes((zl_format)f->cfg.format) : 2u;
+}
+
 static uint8_t mesh_of_id(const zl_frame *f, uint16_t id)
 {
     uint8_t mi = 0;
@@ -565,7 +572,7 @@ static ZL_NOINLINE void catch_up(zl_frame *f)
     if (y >= f->next_row)
         return;
     zl_fill16(zrow, f->clear_depth, w);
-    memset(f->color_band[0], 0, (size_t)w * zl_format_bytes((zl_format)f->cfg.format));
+    memset(f->color_band[0], 0, (size_t)w * frame_bpp(f));
     for (; y < f->next_row; y++)
         render_row(f, y, f->color_band[0], zrow);
 }
@@ -596,7 +603,7 @@ static ZL_NOINLINE void dry_rows(zl_frame *f, uint16_t r0, uint8_t *crow, uint16
 static ZL_NOINLINE zl_status over_band(zl_frame *f, uint16_t rows, uint8_t *color)
 {
     uint16_t r, w = f->cfg.width, r0 = f->next_row, r1 = (uint16_t)(f->next_row + rows);
-    size_t bpp = zl_format_bytes((zl_format)f->cfg.format);
+    size_t bpp = frame_bpp(f);
     uint32_t id_lo = 0;
     uint8_t pix[3] = {0, 0, 0};
     pack_color((zl_format)f->cfg.format, f->clear_color.r, f->clear_color.g, f->clear_color.b, pix);
@@ -667,7 +674,7 @@ static ZL_NOINLINE zl_status next_band_over(zl_frame *f, zl_band *band)
     st = over_band(f, rows, color);
     if (st != ZL_OK)
         return st;
-    band_done(f, band, rows, color, f->cfg.width, zl_format_bytes((zl_format)f->cfg.format));
+    band_done(f, band, rows, color, f->cfg.width, frame_bpp(f));
     return ZL_OK;
 }
 
@@ -724,7 +731,7 @@ zl_status zl_frame_next_band(zl_frame *f, zl_band *band)
     if (f->next_row >= f->end_row)
         return ZL_DONE;
     w = f->cfg.width;
-    bpp = zl_format_bytes((zl_format)f->cfg.format);
+    bpp = frame_bpp(f);
     rows = (uint16_t)(f->end_row - f->next_row);
     if (rows > f->cfg.band_rows)
         rows = f->cfg.band_rows;
