@@ -117,10 +117,17 @@
  *   (vx_cache) beside the definition (cache_vertex_generic), the bound
  *   that spares zl_check_positions a transform a vertex, the 32-bit face
  *   normal beside the 64-bit one, a copy of the clip-plane distance in
- *   each file that clips, a second copy of the face shading;
+ *   each file that clips (one compact copy without), a second copy of the
+ *   face shading, the depth division in short digits (depth_q16);
+ * - arithmetic: ARMv6-M's 32-bit forms of 64-bit products (ZL_MUL32_ONLY
+ *   defaults to 0 without), the sine table (without: its nodes from a
+ *   polynomial, the same values, zl_fixed.c), small 64-bit helpers copied
+ *   into their callers (without: out of line, ZL_SMALL_NOINLINE);
  * - set-up: cached flat triangles in 32 bits (setup_flat_32), attribute
  *   planes of small triangles in 32 bits (plane_fast) and their divisions
  *   by 64-by-32 reciprocals (muldiv_pow2);
+ * - clears: zl_fill16's block stores, zl_clear's one fill of a target
+ *   whose rows have no gaps;
  * - frame mode: the loops over the vertex cache for plain flat and Gouraud
  *   draws (draw_plain, draw_plain_gouraud), the all-rows loop of flat
  *   triangles (zl_tri_rows_flat);
@@ -130,7 +137,8 @@
  * - scanline mode: the planning of a whole frame (zl_frame_plan: the
  *   edge table's first rows kept in idle regions, the bit array of visible
  *   triangles, the inlined classification on the vertex cache) beside
- *   over capacity's windows, the band loop of a planned frame, the set-up
+ *   over capacity's windows and their classification on the vertex cache
+ *   (zl_frame_rows_cached), the band loop of a planned frame, the set-up
  *   of cached flat triangles (activate_cached), the row walks for LESS,
  *   LEQUAL and unstyled meshes (render_row_less, _lequal, _plain,
  *   activate_plain).
