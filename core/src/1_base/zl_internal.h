@@ -270,9 +270,9 @@ static inline uint32_t zl_div_inv_q(const zl_div_inv *di, uint64_t n)
 #endif
 
 /* Out of line without the fast paths (ZL_FAST_PATHS=0, zl_config.h): a
- * small helper of 64-bit arithmetic that -Os copies into each of its
- * callers, where on Cortex-M0 each copy is libgcc calls and register moves;
- * with the fast paths the compiler decides, as before. */
+ * small helper that -Os copies into each of its callers, where on Cortex-M0
+ * a copy of 64-bit arithmetic is libgcc calls and register moves; with the
+ * fast paths the compiler decides, as before. */
 #if ZL_FAST_PATHS
 #define ZL_SMALL_NOINLINE
 #else
