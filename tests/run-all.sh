@@ -65,6 +65,20 @@ run host -DCMAKE_BUILD_TYPE=Release
 # taken 249 s of CI's 58 minutes.
 CTEST_EXCLUDE='^(config_size_table|avr_.*|arduino_.*|core_avr_int16.*|stack_bound_.*|core_dependencies|core_no_float_symbols)$' run sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-g -O1" -DZLINE_SANITIZE=ON
 CTEST_EXCLUDE=
+# The host tools of the cross builds' benchmark and golden firmware
+# (port/cortex-m/bench/host: zline-obj2c, zline-img2c, zline-bsp,
+# zline-golden-host), built here once for every cross stage below
+# (ZLINE_BENCH_HOST_TOOLS, port/cortex-m/bench/host-tools.cmake) instead of by
+# an ExternalProject in each of the ten: the same sources, arguments and host
+# compiler, so the same programs (about 20 CPU seconds a build).
+t0=$(date +%s)
+bench_tools=$PWD/build/ci-bench-host-tools
+cmake -DOUT="$bench_tools/grid.obj" -P port/cortex-m/bench/grid_obj.cmake
+cmake -S port/cortex-m/bench/host -B "$bench_tools" -DCMAKE_BUILD_TYPE=Release \
+    -DZLINE_GRID_OBJ="$bench_tools/grid.obj" >/dev/null
+cmake --build "$bench_tools" -j "$jobs" >/dev/null
+stage_time bench-host-tools "$t0"
+cross="-DZLINE_BENCH_HOST_TOOLS=$bench_tools"
 # The soft-float M4 leaves test_watertight and test_frame_modes (14 s and 25 s
 # there) to the hard-float M4F below: the same ARMv7E-M instruction set, and
 # an integer core (CTest core_no_float_symbols), so the float ABI changes
@@ -73,13 +87,13 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     exclude=
     [ "$cpu" != cortex-m4 ] || exclude='^(test_watertight|test_frame_modes)$'
     CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu"
+        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU="$cpu"
 done
 CTEST_EXCLUDE=
 # --- RISC-V (port/riscv, issue 17): the portable suite, the golden scenes
 # (host equals target) and the benchmark budgets on rv32imac under
 # qemu-system-riscv32 (virt).
-run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake \
+run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake "$cross" \
     -DZLINE_RISCV_ARCH=rv32imac
 # --- end RISC-V
 # --- issue 11: real-part Cortex-M targets and consumer tests ------------------
@@ -95,7 +109,7 @@ for cpu in cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
     exclude=
     case $cpu in cortex-m7 | cortex-m33 | cortex-m55) exclude='^(test_watertight|test_frame_modes)$' ;; esac
     CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu"
+        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU="$cpu"
 done
 CTEST_EXCLUDE=
 # Issue 27: two cores, one frame on QEMU mps2-an521 (two Cortex-M33 without
@@ -103,7 +117,7 @@ CTEST_EXCLUDE=
 # comparison with the host's single-core frames (CTest dual_an521) and each
 # core's instruction budgets (dual_an521_budgets) alone; about 45 s.
 BUILD_TARGET=dual CTEST_INCLUDE='^dual_an521' run cortex-m33-an521 -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU=cortex-m33 -DZLINE_FLOAT_ABI=soft
+    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU=cortex-m33 -DZLINE_FLOAT_ABI=soft
 BUILD_TARGET= CTEST_INCLUDE=
 # Issue 24: the portable suite built without optimisation (CMake's Debug:
 # -g, no -O, the compiler's -O0) on the hard-float Cortex-M4F, where the
@@ -111,7 +125,7 @@ BUILD_TARGET= CTEST_INCLUDE=
 # test_watertight, which took 114 s and 33 s of its 191 s at -O0 and run
 # optimised on every CPU above.
 CTEST_EXCLUDE='^(test_frame_modes|test_watertight)$' run cortex-m4f-O0 -DCMAKE_BUILD_TYPE=Debug \
-    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU=cortex-m4f
+    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU=cortex-m4f
 CTEST_EXCLUDE=
 # zline as a consumer uses it: add_subdirectory (host and every CPU/ABI under
 # QEMU), install + find_package, FetchContent, pkg-config, vendored sources,
