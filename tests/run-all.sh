@@ -19,11 +19,12 @@
 #      boards, the M4F once more at -O0 (issue 24), the two-core firmware on the
 #      dual Cortex-M33 mps2-an521 (issue 27); then the consumer tests of tests/consumer/run.sh)
 #      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
-#   4. static analysis: cppcheck, clang-tidy, gcc -fanalyzer (tools/lint/run.sh)
-#   5. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 40 here, 60 in
+#   4. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 40 here, 60 in
 #      tests/fuzz/run.sh alone: CI had reached 30 minutes) seconds,
 #      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
-#      fails. Five targets: about 4 minutes with the build.
+#      fails. Nine targets: about 4 minutes with the build.
+#   5. static analysis: cppcheck (beside the last fuzz target), clang-tidy,
+#      gcc -fanalyzer (tools/lint/run.sh)
 # A test that CTest reports skipped (Not Run, Disabled) fails CI as well.
 # Build trees go to build/ci-*. Exit status: non-zero if anything failed.
 set -eu
@@ -33,11 +34,37 @@ ci_start=$(date +%s)
 total=0
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
+# Ninja (Debian's ninja-build), when installed, builds the stages after the
+# host one: no make process, progress command and dependency scan per target,
+# and a target's objects compile while the libraries it links are still being
+# built (a tenth less CPU for a cross stage's build, measured on Cortex-M4).
+# The host stage keeps Make: the mutation sample copies its tree, re-points
+# the paths of its text files and keeps their time stamps (Ninja's binary
+# .ninja_deps would not follow). So does the static analysis: its filter of
+# compile_commands.json reads the Make generator's object paths. And so do the
+# stages whose docs_measured_tables checks README's byte counts (cortex-m4,
+# cortex-m0, rv32imac): Ninja puts an OBJECT library's objects (the port's
+# start-up code) before the target's own on the link line, Make after them,
+# the tables are measured with Make, and rv32imac's bench_scanline_O2 came
+# out 16 bytes smaller with Ninja.
+make_stages=" host cortex-m4 cortex-m0 rv32imac "
+ninja=
+if command -v ninja >/dev/null 2>&1; then ninja=Ninja; fi
+gen= # the generator of run()'s stages ("": CMake's default)
+same_generator() { # same_generator DIR GENERATOR: a build tree of another generator is removed
+    if [ -f "$1/CMakeCache.txt" ] &&
+        ! grep -q "^CMAKE_GENERATOR:INTERNAL=${2:-${CMAKE_GENERATOR:-Unix Makefiles}}\$" "$1/CMakeCache.txt"; then
+        rm -rf "$1"
+    fi
+}
 run() { # run NAME CMAKE-ARGS...
     name=$1; shift
     echo "=== $name"
     stage_start=$(date +%s)
-    cmake -S . -B "build/ci-$name" "$@" >/dev/null
+    g=$gen
+    case $make_stages in *" $name "*) g= ;; esac
+    same_generator "build/ci-$name" "$g"
+    cmake -S . -B "build/ci-$name" ${g:+-G "$g"} "$@" >/dev/null
     cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target "$BUILD_TARGET"} >/dev/null
     ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} \
         ${CTEST_INCLUDE:+-R "$CTEST_INCLUDE"} | tee "$log"
@@ -56,6 +83,7 @@ run() { # run NAME CMAKE-ARGS...
 # stage_time NAME START: what a stage that is not a run took (the CI time table)
 stage_time() { echo "=== $1: $(($(date +%s) - $2)) s"; }
 run host -DCMAKE_BUILD_TYPE=Release
+gen=$ninja
 # What runs no host code under the sanitizers is left to the host stage,
 # which runs it already: the flash table (config_size_table, about 60 s), the
 # AVR builds and QEMU runs (avr_*, arduino_*, core_avr_int16), the cross
@@ -65,6 +93,21 @@ run host -DCMAKE_BUILD_TYPE=Release
 # taken 249 s of CI's 58 minutes.
 CTEST_EXCLUDE='^(config_size_table|avr_.*|arduino_.*|core_avr_int16.*|stack_bound_.*|core_dependencies|core_no_float_symbols)$' run sanitize -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-g -O1" -DZLINE_SANITIZE=ON
 CTEST_EXCLUDE=
+# The host tools of the cross builds' benchmark and golden firmware
+# (port/cortex-m/bench/host: zline-obj2c, zline-img2c, zline-bsp,
+# zline-golden-host), built here once for every cross stage below
+# (ZLINE_BENCH_HOST_TOOLS, port/cortex-m/bench/host-tools.cmake) instead of by
+# an ExternalProject in each of the ten: the same sources, arguments and host
+# compiler, so the same programs (about 20 CPU seconds a build).
+t0=$(date +%s)
+bench_tools=$PWD/build/ci-bench-host-tools
+same_generator "$bench_tools" "$gen"
+cmake -DOUT="$bench_tools/grid.obj" -P port/cortex-m/bench/grid_obj.cmake
+cmake -S port/cortex-m/bench/host -B "$bench_tools" ${gen:+-G "$gen"} -DCMAKE_BUILD_TYPE=Release \
+    -DZLINE_GRID_OBJ="$bench_tools/grid.obj" >/dev/null
+cmake --build "$bench_tools" -j "$jobs" >/dev/null
+stage_time bench-host-tools "$t0"
+cross="-DZLINE_BENCH_HOST_TOOLS=$bench_tools"
 # The soft-float M4 leaves test_watertight and test_frame_modes (14 s and 25 s
 # there) to the hard-float M4F below: the same ARMv7E-M instruction set, and
 # an integer core (CTest core_no_float_symbols), so the float ABI changes
@@ -73,13 +116,13 @@ for cpu in cortex-m4 cortex-m3 cortex-m0; do
     exclude=
     [ "$cpu" != cortex-m4 ] || exclude='^(test_watertight|test_frame_modes)$'
     CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu"
+        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU="$cpu"
 done
 CTEST_EXCLUDE=
 # --- RISC-V (port/riscv, issue 17): the portable suite, the golden scenes
 # (host equals target) and the benchmark budgets on rv32imac under
 # qemu-system-riscv32 (virt).
-run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake \
+run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolchain-riscv.cmake "$cross" \
     -DZLINE_RISCV_ARCH=rv32imac
 # --- end RISC-V
 # --- issue 11: real-part Cortex-M targets and consumer tests ------------------
@@ -95,7 +138,7 @@ for cpu in cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
     exclude=
     case $cpu in cortex-m7 | cortex-m33 | cortex-m55) exclude='^(test_watertight|test_frame_modes)$' ;; esac
     CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU="$cpu"
+        -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU="$cpu"
 done
 CTEST_EXCLUDE=
 # Issue 27: two cores, one frame on QEMU mps2-an521 (two Cortex-M33 without
@@ -103,7 +146,7 @@ CTEST_EXCLUDE=
 # comparison with the host's single-core frames (CTest dual_an521) and each
 # core's instruction budgets (dual_an521_budgets) alone; about 45 s.
 BUILD_TARGET=dual CTEST_INCLUDE='^dual_an521' run cortex-m33-an521 -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU=cortex-m33 -DZLINE_FLOAT_ABI=soft
+    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU=cortex-m33 -DZLINE_FLOAT_ABI=soft
 BUILD_TARGET= CTEST_INCLUDE=
 # Issue 24: the portable suite built without optimisation (CMake's Debug:
 # -g, no -O, the compiler's -O0) on the hard-float Cortex-M4F, where the
@@ -111,7 +154,7 @@ BUILD_TARGET= CTEST_INCLUDE=
 # test_watertight, which took 114 s and 33 s of its 191 s at -O0 and run
 # optimised on every CPU above.
 CTEST_EXCLUDE='^(test_frame_modes|test_watertight)$' run cortex-m4f-O0 -DCMAKE_BUILD_TYPE=Debug \
-    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake -DZLINE_CPU=cortex-m4f
+    -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU=cortex-m4f
 CTEST_EXCLUDE=
 # zline as a consumer uses it: add_subdirectory (host and every CPU/ABI under
 # QEMU), install + find_package, FetchContent, pkg-config, vendored sources,
@@ -145,16 +188,44 @@ rm -f "$mut_log"
 total=$((total + mut_killed))
 stage_time mutation "$t0"
 # ------------------------------------------------------------------------------
-echo "=== static analysis"
-t0=$(date +%s)
-sh tools/lint/run.sh
-stage_time "static analysis" "$t0"
+# --- fuzzing and static analysis ---------------------------------------------
+# Each libFuzzer target for FUZZ_SECONDS, FUZZ_JOBS (2) at a time, one a core.
+# With an odd number of targets (nine) the last one would run alone, a core
+# idle for its FUZZ_SECONDS: lint's cppcheck (single-threaded, about 54 s of
+# CPU, tools/lint/run.sh) runs on that core beside it instead of squeezed in
+# beside clang-tidy's two jobs; clang-tidy and gcc -fanalyzer follow when the
+# last target is done. Every target still has its seconds on a core of its
+# own, and every analyser runs as before.
 FUZZ_SECONDS=${FUZZ_SECONDS:-40}
 export FUZZ_SECONDS
 echo "=== fuzzing, $FUZZ_SECONDS s per target"
 t0=$(date +%s)
-sh tests/fuzz/run.sh build/ci-fuzz
+# shellcheck disable=SC2046
+set -- $(cd tests/fuzz && ls fuzz_*.c | sed 's/^fuzz_//; s/\.c$//')
+fuzz_last=
+if [ "${FUZZ_JOBS:-2}" -eq 2 ] && [ $(($# % 2)) -eq 1 ]; then
+    eval "fuzz_last=\${$#}"
+fi
+fuzz_first=
+for t; do [ "$t" = "$fuzz_last" ] || fuzz_first="$fuzz_first $t"; done
+same_generator build/ci-fuzz "$ninja"
+${ninja:+env CMAKE_GENERATOR=Ninja} env FUZZ_TARGETS="$fuzz_first" sh tests/fuzz/run.sh build/ci-fuzz
+lint_cppcheck=$(mktemp)
+LINT_STEPS=cppcheck sh tools/lint/run.sh >"$lint_cppcheck" 2>&1 &
+cppcheck_pid=$!
+if [ -n "$fuzz_last" ]; then
+    FUZZ_TARGETS=$fuzz_last sh tests/fuzz/run.sh build/ci-fuzz
+fi
 stage_time fuzzing "$t0"
+echo "=== static analysis (cppcheck since the last fuzz target began)"
+t0=$(date +%s)
+LINT_STEPS="clang-tidy analyzer" sh tools/lint/run.sh
+cppcheck_status=0
+wait $cppcheck_pid || cppcheck_status=$?
+cat "$lint_cppcheck"
+rm -f "$lint_cppcheck"
+[ $cppcheck_status -eq 0 ] || exit 1
+stage_time "static analysis" "$t0"
 echo "=== all test suites passed"
 stage_time total "$ci_start"
 # The plain closing line: CTest tests of all the builds, the consumer tests

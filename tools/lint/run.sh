@@ -14,7 +14,10 @@
 # core/ is also built with -Wconversion -Wsign-conversion -Werror by CMake
 # (cmake/Warnings.cmake). Usage: tools/lint/run.sh (no arguments).
 # Environment: JOBS (parallel jobs, default 2), CPPCHECK, CLANG_TIDY, GCC,
-# LINT_BUILD (where CMake writes compile_commands.json, default build/lint).
+# LINT_BUILD (where CMake writes compile_commands.json, default build/lint),
+# LINT_STEPS (which of "cppcheck clang-tidy analyzer" to run, default all
+# three; tests/run-all.sh runs cppcheck beside the last fuzz target, on the
+# core that target leaves free, and the other two after it).
 set -eu
 top=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$top"
@@ -26,6 +29,8 @@ build=${LINT_BUILD:-$top/build/lint}
 inc="-Icore/include -Iport/host"
 files=$(ls core/src/*/*.c port/host/*.c)
 db="$build/compile_commands.json"
+steps=" ${LINT_STEPS:-cppcheck clang-tidy analyzer} "
+has() { case $steps in *" $1 "*) return 0 ;; esac; return 1; } # has STEP: STEP is to run
 status=0
 # gcc -fanalyzer, one file; the script runs itself with --analyse for it.
 analyse() { # analyse FILE: gcc -fanalyzer with FILE's own compile command, its output sent nowhere
@@ -42,21 +47,32 @@ if [ "${1:-}" = --analyse ]; then # a worker of the gcc -fanalyzer step below
     exit
 fi
 
+for step in $steps; do
+    case $step in cppcheck | clang-tidy | analyzer) ;; *) echo "lint: unknown step '$step' (LINT_STEPS)"; exit 2 ;; esac
+done
+mkdir -p "$build"
+
 # The compile commands of the real build (include paths, defines, the
 # project's warnings) come from CMake's compile_commands.json; nothing is
-# built.
-cmake -S "$top" -B "$build" -DCMAKE_C_COMPILER="$gcc" -DCMAKE_BUILD_TYPE=Debug >/dev/null
+# built. (cppcheck alone does not need them.)
+if has clang-tidy || has analyzer; then
+    cmake -S "$top" -B "$build" -DCMAKE_C_COMPILER="$gcc" -DCMAKE_BUILD_TYPE=Debug >/dev/null
+fi
 
 # cppcheck runs on one core in the background while clang-tidy and gcc
 # -fanalyzer share the cores (cppcheck took 54 s of CPU alone; its own -j
 # would leave out the whole-program checks without a build folder); its lines
 # are shown at the end.
-# shellcheck disable=SC2086
-"$cppcheck" --std=c99 --enable=warning,style,performance,portability --inline-suppr \
-    --error-exitcode=1 --quiet -UZL_CONFIG_HEADER -D__GNUC__ \
-    --suppressions-list=tools/lint/cppcheck-suppressions.txt $inc core/src port/host >"$build/cppcheck.log" 2>&1 &
-cppcheck_pid=$!
+cppcheck_pid=
+if has cppcheck; then
+    # shellcheck disable=SC2086
+    "$cppcheck" --std=c99 --enable=warning,style,performance,portability --inline-suppr \
+        --error-exitcode=1 --quiet -UZL_CONFIG_HEADER -D__GNUC__ \
+        --suppressions-list=tools/lint/cppcheck-suppressions.txt $inc core/src port/host >"$build/cppcheck.log" 2>&1 &
+    cppcheck_pid=$!
+fi
 
+if has clang-tidy; then
 echo "--- clang-tidy"
 # clang-tidy analyses a file once per compile command of it, and the tests
 # build the core in seven variants (default, minimal, no cache, 32-bit
@@ -90,16 +106,21 @@ if ! printf '%s\n' $files | xargs -P "$jobs" -I{} sh -c \
     sh "$tidy" "$tidy_db" {}; then
     status=1
 fi
-
-echo "--- gcc -fanalyzer (port/host)"
-# JOBS files at a time (xargs -P: each a worker, this script with --analyse).
-if ! printf '%s\n' port/host/*.c | xargs -P "$jobs" -I{} sh "$top/tools/lint/run.sh" --analyse {}; then
-    status=1
 fi
 
-echo "--- cppcheck"
-wait $cppcheck_pid || status=1
-cat "$build/cppcheck.log"
+if has analyzer; then
+    echo "--- gcc -fanalyzer (port/host)"
+    # JOBS files at a time (xargs -P: each a worker, this script with --analyse).
+    if ! printf '%s\n' port/host/*.c | xargs -P "$jobs" -I{} sh "$top/tools/lint/run.sh" --analyse {}; then
+        status=1
+    fi
+fi
 
-[ $status -eq 0 ] && echo "--- static analysis: no findings"
+if [ -n "$cppcheck_pid" ]; then
+    echo "--- cppcheck"
+    wait $cppcheck_pid || status=1
+    cat "$build/cppcheck.log"
+fi
+
+[ $status -eq 0 ] && echo "--- static analysis ($(echo $steps)): no findings"
 exit $status
