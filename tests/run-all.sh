@@ -41,13 +41,7 @@ trap 'rm -f "$log"' EXIT
 # The host stage keeps Make: the mutation sample copies its tree, re-points
 # the paths of its text files and keeps their time stamps (Ninja's binary
 # .ninja_deps would not follow). So does the static analysis: its filter of
-# compile_commands.json reads the Make generator's object paths. And so do the
-# stages whose docs_measured_tables checks README's byte counts (cortex-m4,
-# cortex-m0, rv32imac): Ninja puts an OBJECT library's objects (the port's
-# start-up code) before the target's own on the link line, Make after them,
-# the tables are measured with Make, and rv32imac's bench_scanline_O2 came
-# out 16 bytes smaller with Ninja.
-make_stages=" host cortex-m4 cortex-m0 rv32imac "
+# compile_commands.json reads the Make generator's object paths.
 ninja=
 if command -v ninja >/dev/null 2>&1; then ninja=Ninja; fi
 gen= # the generator of run()'s stages ("": CMake's default)
@@ -61,10 +55,8 @@ run() { # run NAME CMAKE-ARGS...
     name=$1; shift
     echo "=== $name"
     stage_start=$(date +%s)
-    g=$gen
-    case $make_stages in *" $name "*) g= ;; esac
-    same_generator "build/ci-$name" "$g"
-    cmake -S . -B "build/ci-$name" ${g:+-G "$g"} "$@" >/dev/null
+    same_generator "build/ci-$name" "$gen"
+    cmake -S . -B "build/ci-$name" ${gen:+-G "$gen"} "$@" >/dev/null
     cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target "$BUILD_TARGET"} >/dev/null
     ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} \
         ${CTEST_INCLUDE:+-R "$CTEST_INCLUDE"} | tee "$log"
