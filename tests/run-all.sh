@@ -34,29 +34,11 @@ ci_start=$(date +%s)
 total=0
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-# Ninja (Debian's ninja-build), when installed, builds the stages after the
-# host one: no make process, progress command and dependency scan per target,
-# and a target's objects compile while the libraries it links are still being
-# built (a tenth less CPU for a cross stage's build, measured on Cortex-M4).
-# The host stage keeps Make: the mutation sample copies its tree, re-points
-# the paths of its text files and keeps their time stamps (Ninja's binary
-# .ninja_deps would not follow). So does the static analysis: its filter of
-# compile_commands.json reads the Make generator's object paths.
-ninja=
-if command -v ninja >/dev/null 2>&1; then ninja=Ninja; fi
-gen= # the generator of run()'s stages ("": CMake's default)
-same_generator() { # same_generator DIR GENERATOR: a build tree of another generator is removed
-    if [ -f "$1/CMakeCache.txt" ] &&
-        ! grep -q "^CMAKE_GENERATOR:INTERNAL=${2:-${CMAKE_GENERATOR:-Unix Makefiles}}\$" "$1/CMakeCache.txt"; then
-        rm -rf "$1"
-    fi
-}
 run() { # run NAME CMAKE-ARGS...
     name=$1; shift
     echo "=== $name"
     stage_start=$(date +%s)
-    same_generator "build/ci-$name" "$gen"
-    cmake -S . -B "build/ci-$name" ${gen:+-G "$gen"} "$@" >/dev/null
+    cmake -S . -B "build/ci-$name" "$@" >/dev/null
     cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target "$BUILD_TARGET"} >/dev/null
     ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} \
         ${CTEST_INCLUDE:+-R "$CTEST_INCLUDE"} | tee "$log"
@@ -75,7 +57,6 @@ run() { # run NAME CMAKE-ARGS...
 # stage_time NAME START: what a stage that is not a run took (the CI time table)
 stage_time() { echo "=== $1: $(($(date +%s) - $2)) s"; }
 run host -DCMAKE_BUILD_TYPE=Release
-gen=$ninja
 # What runs no host code under the sanitizers is left to the host stage,
 # which runs it already: the flash table (config_size_table, about 60 s), the
 # AVR builds and QEMU runs (avr_*, arduino_*, core_avr_int16), the cross
@@ -93,9 +74,8 @@ CTEST_EXCLUDE=
 # compiler, so the same programs (about 20 CPU seconds a build).
 t0=$(date +%s)
 bench_tools=$PWD/build/ci-bench-host-tools
-same_generator "$bench_tools" "$gen"
 cmake -DOUT="$bench_tools/grid.obj" -P port/cortex-m/bench/grid_obj.cmake
-cmake -S port/cortex-m/bench/host -B "$bench_tools" ${gen:+-G "$gen"} -DCMAKE_BUILD_TYPE=Release \
+cmake -S port/cortex-m/bench/host -B "$bench_tools" -DCMAKE_BUILD_TYPE=Release \
     -DZLINE_GRID_OBJ="$bench_tools/grid.obj" >/dev/null
 cmake --build "$bench_tools" -j "$jobs" >/dev/null
 stage_time bench-host-tools "$t0"
@@ -200,8 +180,7 @@ if [ "${FUZZ_JOBS:-2}" -eq 2 ] && [ $(($# % 2)) -eq 1 ]; then
 fi
 fuzz_first=
 for t; do [ "$t" = "$fuzz_last" ] || fuzz_first="$fuzz_first $t"; done
-same_generator build/ci-fuzz "$ninja"
-${ninja:+env CMAKE_GENERATOR=Ninja} env FUZZ_TARGETS="$fuzz_first" sh tests/fuzz/run.sh build/ci-fuzz
+FUZZ_TARGETS=$fuzz_first sh tests/fuzz/run.sh build/ci-fuzz
 lint_cppcheck=$(mktemp)
 LINT_STEPS=cppcheck sh tools/lint/run.sh >"$lint_cppcheck" 2>&1 &
 cppcheck_pid=$!
