@@ -126,7 +126,8 @@ static int64_t transform_sum(const zl_mat4 *m, int r, const zl_fixed *p)
 void zl_vertex_residuals(const zl_source *s, uint16_t idx, const zl_wvert *w, int16_t *fx, int16_t *fy)
 {
     *fx = *fy = ZL_FINE_NONE;
-    if (ZL_FEATURE_EXACT_DEPTH && s->mvp != NULL && s->state != NULL && ZL_DEPTH_MAPPED(s->state)) { /* the exact mapping only */
+    /* the exact mapping only (ZL_FEATURE_EXACT_DEPTH needs ZL_FEATURE_DEPTH_MAP, zl_config.h) */
+    if (ZL_FEATURE_EXACT_DEPTH && s->mvp != NULL && s->state != NULL && s->state->far_z != 0) {
         const zl_fixed *p = &s->mesh->positions[idx * 3u];
         int64_t ws = transform_sum(s->mvp, 3, p), xs = transform_sum(s->mvp, 0, p), ys = transform_sum(s->mvp, 1, p);
         *fx = fine_residual(xs, ws, s->width * (uint32_t)(ZL_SUB_ONE / 2), xs < 0, w->x);
