@@ -104,16 +104,11 @@ static int64_t mul_q60(int64_t a, int64_t b)
 /* The same in Q60 (error below 2^-55, so round(65536 sin) is exact unless
  * the value is that close to a rounding tie), for the nodes: four times the
  * work of ref_sin_q16 (on the ATmega2560 the sweep took 50 s with it). */
-static int64_t ref_sin_exact_q16(int32_t a)
+static int64_t ref_sin_exact_q16(int32_t a) /* a in 0 .. 16384: the first quarter's nodes */
 {
     const int64_t pi_q60 = INT64_C(3622009729038561421); /* pi 2^60, rounded */
     int64_t x, x2, term, sum;
     int k;
-    a &= 0xFFFF;
-    if (a >= 32768)
-        return -ref_sin_exact_q16(a - 32768);
-    if (a > 16384)
-        a = 32768 - a;
     x = (int64_t)a * (pi_q60 / 32768); /* a 2 pi / 65536, below 2^61 */
     x2 = mul_q60(x, x);
     term = x;
