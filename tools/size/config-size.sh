@@ -18,7 +18,9 @@
 # ZL_DRAW_CACHE_SLOTS=0: the same pixels, slower; on the ATmega2560 the
 # first two are already 0, where int has 16 bits), and its rows -frame and
 # -scanline: a firmware that draws in that mode only (the same core, the
-# probe without the other mode's calls). Targets: Cortex-M0+, Cortex-M4
+# probe without the other mode's calls), and minimal-small-exact-clip: the
+# same with ZL_FEATURE_EXACT_CLIP on (the exact planes of clipped
+# triangles, which minimal.txt leaves out). Targets: Cortex-M0+, Cortex-M4
 # (arm-none-eabi-gcc), rv32imc (riscv64-unknown-elf-gcc with picolibc's
 # headers), ATmega2560 (avr-gcc), each at -Os and -O2.
 #
@@ -99,12 +101,14 @@ while read -r name prefix emulation flags; do
     (
     work=$target_root/target-$i
     configs="all-on minimal"
-    [ "$name" = Cortex-M0+ ] && configs="$configs minimal-small"
+    [ "$name" = Cortex-M0+ ] && configs="$configs minimal-small minimal-small-exact-clip"
     for config in $configs; do
         case $config in
         all-on) extra= ;;
         minimal) extra=$minimal ;;
         minimal-small) extra="$minimal $small" ;;
+        # what the exact planes of clipped triangles cost (ZL_FEATURE_EXACT_CLIP on)
+        minimal-small-exact-clip) extra="$(echo "$minimal" | sed 's/-DZL_FEATURE_EXACT_CLIP=0//') $small" ;;
         esac
         # minimal-small: also a firmware that draws in one mode only (the
         # same core objects, a probe without the other mode's calls)

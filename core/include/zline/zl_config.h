@@ -194,6 +194,16 @@
  *                        of 28,104). Off, the plane goes through the
  *                        snapped vertices whatever the mapping (zline.h,
  *                        Pseudodepth); nothing returns ZL_ERR_UNSUPPORTED.
+ *   ZL_FEATURE_EXACT_CLIP  a triangle that clipping cuts keeps the depth,
+ *                        colour and texture planes of the original triangle
+ *                        (zline.h, Clipping: 256-bit homogeneous solves,
+ *                        zl_clip_planes.c; README's flash table has its
+ *                        cost: rows minimal-small, -exact-clip).
+ *                        Off, each fan piece is set up as an unclipped
+ *                        triangle through its snapped vertices, with the
+ *                        depth and colour the clipper gives them (zline.h,
+ *                        Clipping, for the bound); nothing returns
+ *                        ZL_ERR_UNSUPPORTED.
  *   ZL_FEATURE_LIGHTING  the state's light (zl_state.light_on, ambient,
  *                        light_dir): off, a state with light_on set is
  *                        refused (zl_state_check)
@@ -237,6 +247,9 @@
 #ifndef ZL_FEATURE_EXACT_DEPTH
 #define ZL_FEATURE_EXACT_DEPTH ZL_FEATURE_DEPTH_MAP
 #endif
+#ifndef ZL_FEATURE_EXACT_CLIP
+#define ZL_FEATURE_EXACT_CLIP 1
+#endif
 #ifndef ZL_FEATURE_LIGHTING
 #define ZL_FEATURE_LIGHTING 1
 #endif
@@ -258,7 +271,8 @@
     (ZL_FEATURE_LIGHTING != 0 && ZL_FEATURE_LIGHTING != 1) || (ZL_FEATURE_OFFSET != 0 && ZL_FEATURE_OFFSET != 1) || \
     (ZL_FEATURE_DEPTH_FUNCS != 0 && ZL_FEATURE_DEPTH_FUNCS != 1) ||                                              \
     (ZL_FEATURE_FORMATS != 0 && ZL_FEATURE_FORMATS != 1) || (ZL_FEATURE_SPLIT != 0 && ZL_FEATURE_SPLIT != 1) || \
-    (ZL_FEATURE_DEPTH_MAP != 0 && ZL_FEATURE_DEPTH_MAP != 1)
+    (ZL_FEATURE_DEPTH_MAP != 0 && ZL_FEATURE_DEPTH_MAP != 1) ||                                                  \
+    (ZL_FEATURE_EXACT_CLIP != 0 && ZL_FEATURE_EXACT_CLIP != 1)
 #error "each ZL_FEATURE_* must be 0 or 1"
 #endif
 #if ZL_FEATURE_EXACT_DEPTH && !ZL_FEATURE_DEPTH_MAP
@@ -275,7 +289,8 @@
      ((unsigned)ZL_FEATURE_OUTLINES << 3) | ((unsigned)ZL_FEATURE_EXACT_DEPTH << 4) |                      \
      ((unsigned)ZL_FEATURE_LIGHTING << 5) | ((unsigned)ZL_FEATURE_OFFSET << 6) |                           \
      ((unsigned)ZL_FEATURE_DEPTH_FUNCS << 7) | ((unsigned)ZL_FEATURE_FORMATS << 8) |                      \
-     ((unsigned)ZL_FEATURE_SPLIT << 9) | ((unsigned)ZL_FEATURE_DEPTH_MAP << 10))
+     ((unsigned)ZL_FEATURE_SPLIT << 9) | ((unsigned)ZL_FEATURE_DEPTH_MAP << 10) |                        \
+     ((unsigned)ZL_FEATURE_EXACT_CLIP << 11))
 
 /*
  * ZL_MESH_READ_FIXED(p), ZL_MESH_READ_U16(p), ZL_MESH_READ_U8(p): how the

@@ -122,6 +122,25 @@
  *   references by tests/host/test_clip_planes.c (depth, screen-linear
  *   colour), test_clip_attrs.c (perspective colour, textures) and
  *   test_clip_coverage.c (coverage: watertight, and pinned).
+ *   Built with ZL_FEATURE_EXACT_CLIP 0 (zl_config.h; the minimal
+ *   configuration), the coverage is the same but each fan piece is set up
+ *   as an unclipped triangle through its snapped vertices, with the depth,
+ *   colour and texture coordinates the clipper interpolates there
+ *   (perspective-correct at those vertices); the AET and the ray caster
+ *   compare those planes. At a pixel whose exact depth changes by g steps
+ *   a pixel (|d/dx| + |d/dy|) the stored depth is then within +-1 of
+ *   clamp(round(65535 z'), 0, 65535) for a z' within g (1/32 + e) + d
+ *   steps of the exact value above: 1/32 pixel is the snapping, e and d
+ *   the move of a vertex the clipper makes by one Q16.16 unit of its clip
+ *   x, y, w and z, in pixels ((max(W, H) / 2) (1 + R) / w) and in steps
+ *   (65535 * 2 / w, times f / (f - n) with the exact mapping), w the least
+ *   clip w and R the largest |x / w|, |y / w| of the vertices the clipper
+ *   makes (in pixel space 2^-16 pixel and 1 step). A steep piece can so be
+ *   off by hundreds of steps where the original planes keep +-1 (the test
+ *   below measures both); a scene whose geometry stays in front of the
+ *   near plane and behind the far one is never cut. The Gouraud colour
+ *   stays within the vertex colours (+-1). test_clip_planes_exact_clip_off
+ *   checks both bounds against the same reference.
  *
  * Gouraud colour (screen-linear, state.shading ZL_SHADE_GOURAUD): at a
  *   covered pixel each channel is the exact mix e (8-bit units, a real

@@ -510,7 +510,7 @@ int zl_tri_piece(const zl_source *s, const zl_style *sty, uint32_t tri, const zl
         t->rgb[0] = flat.r;
         t->rgb[1] = flat.g;
         t->rgb[2] = flat.b;
-        if (poly->clipped) {
+        if (ZL_FEATURE_EXACT_CLIP && poly->clipped) { /* off: the piece's own planes (zl_config.h) */
             zl_tri_orig_piece(s, sty, tri, poly, &poly->v[0], &poly->v[k + 1], &poly->v[k + 2], t, g, tp);
             off = ZL_FEATURE_OFFSET ? zl_tri_offset_plane(&t->z, sty) : 0; /* off: none (zl_style_check) */
         } else {

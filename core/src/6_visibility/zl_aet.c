@@ -170,7 +170,7 @@ int zl_aet_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user)
                 if (!zl_tri_setup(a, NULL, &poly.v[0], &poly.v[k], &poly.v[k + 1], &poly, &v->meshes[mi].state,
                                   v->cfg.width, v->cfg.height))
                     continue;
-                if (poly.clipped) /* the original triangle's depth plane, as the z-buffer's */
+                if (ZL_FEATURE_EXACT_CLIP && poly.clipped) /* the original triangle's depth plane, as the z-buffer's */
                     zl_tri_orig_piece(&src, NULL, t, &poly, &poly.v[0], &poly.v[k], &poly.v[k + 1], a, NULL, NULL);
                 n_free--;
                 a->id = v->visible[b];

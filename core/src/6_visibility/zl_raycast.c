@@ -188,10 +188,12 @@ int zl_raycast_render_rows(zl_vis *v, zl_rgb clear, zl_vis_row_fn fn, void *user
                 if (!zl_vis_rtri_init(r, &poly.v[0], &poly.v[k], &poly.v[k + 1], &v->meshes[mi].state,
                                       v->cfg.width, v->cfg.height, &f))
                     continue;
-                if (poly.clipped)
-                    wide_depths(r, &src, t);
-                else if (poly.n == 3 && poly.fx[0] != ZL_FINE_NONE) /* the exact mapping's plane */
+                if (poly.clipped) {
+                    if (ZL_FEATURE_EXACT_CLIP) /* off: the piece's own depths, as the z-buffer's */
+                        wide_depths(r, &src, t);
+                } else if (poly.n == 3 && poly.fx[0] != ZL_FINE_NONE) { /* the exact mapping's plane */
                     exact_depths(r, &poly, &poly.v[0], &poly.v[k], &poly.v[k + 1]);
+                }
                 r->id = v->visible[b];
                 r->rgb[0] = poly.flat.r;
                 r->rgb[1] = poly.flat.g;
