@@ -24,7 +24,7 @@
  * Built with ZL_FEATURE_EXACT_CLIP 0 (CTest test_clip_planes_exact_clip_off),
  * each piece takes the plane through its snapped vertices with the depths
  * the clipper gives them, and the test checks that contract's bound instead
- * (zline.h, Clipping; piece_depth_bound below): the exact gradient times
+ * (zline.h, Clipping; piece_depth_slack below): the exact gradient times
  * the snapping (1/32 pixel an axis) and the clipper's Q16.16 rounding, on
  * top of the +-1; the colour, in every channel, within the vertex colours
  * (+-1): each piece interpolates between colours on the original triangle.
