@@ -39,7 +39,9 @@ run() { # run NAME CMAKE-ARGS...
     echo "=== $name"
     stage_start=$(date +%s)
     cmake -S . -B "build/ci-$name" "$@" >/dev/null
-    cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target "$BUILD_TARGET"} >/dev/null
+    # BUILD_TARGET: one target or several, separated by spaces (default: all)
+    # shellcheck disable=SC2086
+    cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target $BUILD_TARGET} >/dev/null
     ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} \
         ${CTEST_INCLUDE:+-R "$CTEST_INCLUDE"} | tee "$log"
     # set -e does not see a failure inside a pipeline: check ctest's summary
