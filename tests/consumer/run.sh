@@ -12,7 +12,7 @@
 #   subdir_<cpu>     the same in a Cortex-M cross build with zline's toolchain
 #                    file, one per CPU and float ABI (the per-ABI link tests:
 #                    the core links into firmware of that ABI), each run under
-#                    QEMU on its board
+#                    QEMU on its board (the M0+ is the M0's build: see lane_a)
 #   install          cmake --install of a host build without tests or tools:
 #                    the library, components host and panel, the converters
 #   find_package     find_package(zline 0.1 CONFIG REQUIRED) from that prefix,
@@ -496,7 +496,13 @@ lane_a() {
     check headers_cxx11_gxx headers g++ "$strict_cxx" cpp
     check headers_cxx11_clangxx headers clang++ "$strict_cxx" cpp
     check subdir_host subdir_host
-    for cpu_abi in ${CONSUMER_CPUS:-cortex-m0 cortex-m0plus cortex-m3 cortex-m4 cortex-m4f:softfp cortex-m4f:hard \
+    # No subdir_cortex-m0plus: its build was subdir_cortex-m0's, byte for byte
+    # (the same libzline.a, the same firmware image: objcopy -O binary of both
+    # consumer.elf files compared), run on the same QEMU board (17.6 CPU
+    # seconds, user + sys of the case). The core is still compiled with
+    # -mcpu=cortex-m0plus by the host stage's config_size_table
+    # (tools/size/config-size.sh, -Os and -O2).
+    for cpu_abi in ${CONSUMER_CPUS:-cortex-m0 cortex-m3 cortex-m4 cortex-m4f:softfp cortex-m4f:hard \
         cortex-m7:softfp cortex-m7:hard cortex-m33:hard cortex-m55:hard cortex-m55:soft}; do
         cpu=${cpu_abi%%:*}
         abi=
