@@ -18,8 +18,8 @@
 #       each must make the host suite fail
 #      (and, issue 11: for the hard-float M4F and M55 on their boards, the
 #      golden scenes and port tests of the M7 and M33 on theirs, the M4F once
-#      more at -O0 (issue 24: all built, the faster tests run), the two-core firmware on the
-#      dual Cortex-M33 mps2-an521 (issue 27); then the consumer tests of tests/consumer/run.sh)
+#      more at -O0 (issue 24: all built, the faster tests run), the two-core
+#      firmware on the dual Cortex-M33 mps2-an521 (issue 27); then the consumer tests of tests/consumer/run.sh)
 #      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
 #   4. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 25 here, 60 in
 #      tests/fuzz/run.sh alone: CI had reached 30 minutes, then 40 minutes)
@@ -162,12 +162,12 @@ BUILD_TARGET= CTEST_INCLUDE=
 # at -O0. It runs the golden scenes (host equals target at -O0: every mode
 # and style through the span assembly), the paths against their reference
 # (test_paths_match_reference), the Gouraud bound (test_gouraud_bound, the
-# DSP assembly's spans) and every other test under 5 s there (33 tests, 41
-# CPU seconds: user + sys of the ctest command). The eleven slow ones (test_depth_state, test_lines,
-# test_raster_mask, test_fastdiv and _minimal, test_smooth_light,
-# test_fast_paths, _minimal and _general, test_sizing, test_blend: 165 of
-# the 205 test-seconds of this stage in the last CI run, CTest's per-test
-# times) run optimised on the M4F above and on M3, M0, M55 and rv32imac;
+# DSP assembly's RGB565 spans) and every other test under 5 s there (33
+# tests, 41 CPU seconds: user + sys of the ctest command). The eleven slow
+# ones (test_depth_state, test_lines, test_raster_mask, test_fastdiv and
+# _minimal, test_smooth_light, test_fast_paths, _minimal and _general,
+# test_sizing, test_blend: 165 of the 205 test-seconds of this stage in the
+# last CI run, CTest's per-test times) run optimised on the M4F above and on M3, M0, M55 and rv32imac;
 # test_frame_modes and test_watertight on those but the M55.
 o0_slow='test_depth_state|test_lines|test_raster_mask|test_fastdiv|test_fastdiv_minimal|test_smooth_light'
 o0_slow="$o0_slow|test_fast_paths|test_fast_paths_minimal|test_fast_paths_general|test_sizing|test_blend"
