@@ -10,19 +10,21 @@
 #   2. the same under AddressSanitizer + UndefinedBehaviorSanitizer, built
 #      with clang: its -fsanitize=undefined includes float-cast-overflow,
 #      which GCC's does not (the OBJ normalisation finding of issue 16)
-#   3. the portable tests cross-compiled for Cortex-M4, M3 and M0, run under QEMU
+#   3. the portable tests cross-compiled for Cortex-M3 and M0, run under QEMU,
+#      and the Cortex-M4's benchmark budgets, golden scenes and port tests
 #      (the M3 build also runs the LM3S6965 OLED firmware on QEMU's emulated
 #      display against the host's frames: port/lm3s6965, about 10 s)
 #   3b. a sample of 3 mutations (tools/mutation/mutate.py, chosen by the date):
 #       each must make the host suite fail
-#      (and, issue 11: for the hard-float M4F and M7, M33 and M55 on their
-#      boards, the M4F once more at -O0 (issue 24), the two-core firmware on the
-#      dual Cortex-M33 mps2-an521 (issue 27); then the consumer tests of tests/consumer/run.sh)
+#      (and, issue 11: for the hard-float M4F and M55 on their boards, the
+#      golden scenes and port tests of the M7 and M33 on theirs, the M4F once
+#      more at -O0 (issue 24: all built, the faster tests run), the two-core
+#      firmware on the dual Cortex-M33 mps2-an521 (issue 27); then the consumer tests of tests/consumer/run.sh)
 #      (and for RISC-V rv32imac: port/riscv, the block after the Cortex-M runs)
-#   4. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 40 here, 60 in
-#      tests/fuzz/run.sh alone: CI had reached 30 minutes) seconds,
-#      two at a time, under ASan + UBSan (tests/fuzz/run.sh); any finding
-#      fails. Nine targets: about 4 minutes with the build.
+#   4. fuzzing: each libFuzzer target for FUZZ_SECONDS (default 25 here, 60 in
+#      tests/fuzz/run.sh alone: CI had reached 30 minutes, then 40 minutes)
+#      seconds, two at a time, under ASan + UBSan (tests/fuzz/run.sh); any
+#      finding fails. Nine targets: about 3 minutes with the build.
 #   5. static analysis: cppcheck (beside the last fuzz target), clang-tidy,
 #      gcc -fanalyzer (tools/lint/run.sh)
 # A test that CTest reports skipped (Not Run, Disabled) fails CI as well.
@@ -39,7 +41,9 @@ run() { # run NAME CMAKE-ARGS...
     echo "=== $name"
     stage_start=$(date +%s)
     cmake -S . -B "build/ci-$name" "$@" >/dev/null
-    cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target "$BUILD_TARGET"} >/dev/null
+    # BUILD_TARGET: one target or several, separated by spaces (default: all)
+    # shellcheck disable=SC2086
+    cmake --build "build/ci-$name" -j "$jobs" ${BUILD_TARGET:+--target $BUILD_TARGET} >/dev/null
     ctest --test-dir "build/ci-$name" --output-on-failure -j "$jobs" ${CTEST_EXCLUDE:+-E "$CTEST_EXCLUDE"} \
         ${CTEST_INCLUDE:+-R "$CTEST_INCLUDE"} | tee "$log"
     # set -e does not see a failure inside a pipeline: check ctest's summary
@@ -80,17 +84,42 @@ cmake -S port/cortex-m/bench/host -B "$bench_tools" -DCMAKE_BUILD_TYPE=Release \
 cmake --build "$bench_tools" -j "$jobs" >/dev/null
 stage_time bench-host-tools "$t0"
 cross="-DZLINE_BENCH_HOST_TOOLS=$bench_tools"
-# The soft-float M4 leaves test_watertight and test_frame_modes (14 s and 25 s
-# there) to the hard-float M4F below: the same ARMv7E-M instruction set, and
-# an integer core (CTest core_no_float_symbols), so the float ABI changes
-# nothing those two tests draw; every other test runs on both.
+# One CPU of each instruction set runs the portable suite (tests/test_*.c
+# with its minimal and no-cache builds): ARMv7E-M the hard-float M4F (below,
+# and again at -O0), ARMv7-M the M3, ARMv6-M the M0, ARMv8.1-M the M55 and
+# RV32 rv32imac. The core takes the same source paths on every CPU of an
+# instruction set (its inline assembly is chosen by __ARM_ARCH_6M__ / 7M /
+# 7EM and __ARM_FEATURE_DSP, core/src/3_raster/zl_span.c), only the
+# compiler's code differs (scheduled for the CPU; with an FPU, GCC also keeps
+# integers in its registers: 33 of the core's 41 -O3 objects differ between
+# the M4 and the M4F, objdump -d). So the other CPUs of an instruction set (the
+# soft-float M4 and the M7 beside the M4F, the M33 beside the M55) build and
+# run what is theirs alone: the golden scenes, their frames equal to the
+# host's (frame, scanline and band mode; flat, Gouraud, smooth-lit, textured
+# and blended: the core as compiled for that CPU), test_float (zl_float.h on
+# that CPU's FPU or soft float), the port's self-tests and fault reports on
+# its board, and on the M4 the benchmark budgets and README's measured
+# tables. What they no longer build and run, the rest of the portable suite
+# (37 tests; 38 programs and the no-cache and minimal cores), had taken 73
+# test-seconds on the M4, 59 on the M7 and 75 on the M33 in the last CI run
+# (CTest's per-test times), and its build 48, 49 and 53 CPU seconds (user +
+# sys of cmake --build of all after the stage's own targets); the stages'
+# builds now take 55 (with the benchmarks), 22 and 22.
+same_isa_tests='golden_host_equals_target|test_float|port_selftest|port_fault_.*'
+same_isa_targets='golden test_float port_selftest port_fault_undefined_instruction port_fault_division_by_zero
+    port_fault_stack_overflow port_fault_division_by_zero_64'
+m4_bench_targets='bench_frame_O2 bench_frame_Os bench_scanline_O2 bench_scanline_Os bench_features_O2
+    bench_features_Os bench_smooth_O2 bench_smooth_Os bench_vis_O2'
 for cpu in cortex-m4 cortex-m3 cortex-m0; do
-    exclude=
-    [ "$cpu" != cortex-m4 ] || exclude='^(test_watertight|test_frame_modes)$'
-    CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
+    targets= include=
+    if [ "$cpu" = cortex-m4 ]; then
+        targets="$same_isa_targets $m4_bench_targets"
+        include="^($same_isa_tests|bench_.*|docs_measured_tables)\$"
+    fi
+    BUILD_TARGET=$targets CTEST_INCLUDE=$include run "$cpu" -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU="$cpu"
 done
-CTEST_EXCLUDE=
+BUILD_TARGET= CTEST_INCLUDE=
 # --- RISC-V (port/riscv, issue 17): the portable suite, the golden scenes
 # (host equals target) and the benchmark budgets on rv32imac under
 # qemu-system-riscv32 (virt).
@@ -98,21 +127,27 @@ run rv32imac -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=port/riscv/toolch
     -DZLINE_RISCV_ARCH=rv32imac
 # --- end RISC-V
 # --- issue 11: real-part Cortex-M targets and consumer tests ------------------
-# The suite on the hard-float parts, each on its QEMU board: Cortex-M4F
-# (mps2-an386) whole; M7 (mps2-an500), M33 (mps2-an505) and M55
-# (mps3-an547) whole but for the two slow tests, test_watertight and
+# The hard-float parts, each on its QEMU board: Cortex-M4F (mps2-an386) and
+# M55 (mps3-an547) the portable suite, the M55 but for test_watertight and
 # test_frame_modes (up to a minute each there; test_frame_modes renders
-# every random scene over capacity too), which M4F runs on the same code
-# paths (the M7's is the same ARMv7E-M instruction set, scheduled for it),
-# as do M3, M0 and rv32imac. (A clean clone's run had reached 44
+# every random scene over capacity too), which run on the M4F, M3, M0 and
+# rv32imac. The M55 is ARMv8.1-M's: GCC vectorises the core's loops with
+# MVE and uses the low-overhead loops there (vadd.i32, vmul.i32 on q
+# registers, dls/le in its -O3 objects), code no other CPU runs. The M7
+# (mps2-an500, ARMv7E-M as the M4F) and the M33 (mps2-an505, ARMv8-M
+# Mainline, the M55's source paths without MVE) build and run their own
+# tests alone (same_isa_tests above). (A clean clone's run had reached 44
 # minutes here.)
 for cpu in cortex-m4f cortex-m7 cortex-m33 cortex-m55; do
-    exclude=
-    case $cpu in cortex-m7 | cortex-m33 | cortex-m55) exclude='^(test_watertight|test_frame_modes)$' ;; esac
-    CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
+    targets= include= exclude=
+    case $cpu in
+    cortex-m7 | cortex-m33) targets=$same_isa_targets include="^($same_isa_tests)\$" ;;
+    cortex-m55) exclude='^(test_watertight|test_frame_modes)$' ;;
+    esac
+    BUILD_TARGET=$targets CTEST_INCLUDE=$include CTEST_EXCLUDE=$exclude run "$cpu" -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU="$cpu"
 done
-CTEST_EXCLUDE=
+BUILD_TARGET= CTEST_INCLUDE= CTEST_EXCLUDE=
 # Issue 27: two cores, one frame on QEMU mps2-an521 (two Cortex-M33 without
 # an FPU: soft float): the firmware (port/cortex-m/bench/dual.c) and its
 # comparison with the host's single-core frames (CTest dual_an521) and each
@@ -122,10 +157,21 @@ BUILD_TARGET=dual CTEST_INCLUDE='^dual_an521' run cortex-m33-an521 -DCMAKE_BUILD
 BUILD_TARGET= CTEST_INCLUDE=
 # Issue 24: the portable suite built without optimisation (CMake's Debug:
 # -g, no -O, the compiler's -O0) on the hard-float Cortex-M4F, where the
-# inline assembly once failed to compile; but for test_frame_modes and
-# test_watertight, which took 114 s and 33 s of its 191 s at -O0 and run
-# optimised on every CPU above.
-CTEST_EXCLUDE='^(test_frame_modes|test_watertight)$' run cortex-m4f-O0 -DCMAKE_BUILD_TYPE=Debug \
+# inline assembly once failed to compile ('impossible constraints' in
+# fill_blocks_stm): every program of the stage is still compiled and linked
+# at -O0. It runs the golden scenes (host equals target at -O0: every mode
+# and style through the span assembly), the paths against their reference
+# (test_paths_match_reference), the Gouraud bound (test_gouraud_bound, the
+# DSP assembly's RGB565 spans) and every other test under 5 s there (33
+# tests, 41 CPU seconds: user + sys of the ctest command). The eleven slow
+# ones (test_depth_state, test_lines, test_raster_mask, test_fastdiv and
+# _minimal, test_smooth_light, test_fast_paths, _minimal and _general,
+# test_sizing, test_blend: 165 of the 205 test-seconds of this stage in the
+# last CI run, CTest's per-test times) run optimised on the M4F above and on M3, M0, M55 and rv32imac;
+# test_frame_modes and test_watertight on those but the M55.
+o0_slow='test_depth_state|test_lines|test_raster_mask|test_fastdiv|test_fastdiv_minimal|test_smooth_light'
+o0_slow="$o0_slow|test_fast_paths|test_fast_paths_minimal|test_fast_paths_general|test_sizing|test_blend"
+CTEST_EXCLUDE="^(test_frame_modes|test_watertight|$o0_slow)\$" run cortex-m4f-O0 -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_TOOLCHAIN_FILE=port/cortex-m/toolchain-arm-none-eabi.cmake "$cross" -DZLINE_CPU=cortex-m4f
 CTEST_EXCLUDE=
 # zline as a consumer uses it: add_subdirectory (host and every CPU/ABI under
@@ -168,7 +214,14 @@ stage_time mutation "$t0"
 # beside clang-tidy's two jobs; clang-tidy and gcc -fanalyzer follow when the
 # last target is done. Every target still has its seconds on a core of its
 # own, and every analyser runs as before.
-FUZZ_SECONDS=${FUZZ_SECONDS:-40}
+# 25 s a target (40 s before; five rounds, four of two targets and the last
+# beside cppcheck: 75 s of CI's time and 135 CPU seconds less): each run starts by executing every input of
+# its committed corpus, seeds and former findings (tests/fuzz/corpus/NAME),
+# before it mutates them, and CTest's fuzz_replay_NAME replays that corpus
+# in the host stage and, under ASan + UBSan, in the sanitize stage; what the
+# shorter time gives up is only the newly generated inputs after 25 s
+# (fuzz_light, the fastest, had run 1.3 million inputs in 40 s).
+FUZZ_SECONDS=${FUZZ_SECONDS:-25}
 export FUZZ_SECONDS
 echo "=== fuzzing, $FUZZ_SECONDS s per target"
 t0=$(date +%s)
