@@ -10,9 +10,10 @@
 #                    libzline_panel.a are built, no zline warning flag reaches
 #                    the consumer's compiler
 #   subdir_<cpu>     the same in a Cortex-M cross build with zline's toolchain
-#                    file, one per CPU and float ABI (the per-ABI link tests:
-#                    the core links into firmware of that ABI), each run under
-#                    QEMU on its board (the M0+ is the M0's build: see lane_a)
+#                    file: the M4F, and each float ABI no CI stage links (the
+#                    per-ABI link tests: the core links into firmware of that
+#                    ABI), each run under QEMU on its board (the other pairs:
+#                    CONSUMER_CPUS, see lane_a)
 #   install          cmake --install of a host build without tests or tools:
 #                    the library, components host and panel, the converters
 #   find_package     find_package(zline 0.1 CONFIG REQUIRED) from that prefix,
@@ -502,8 +503,13 @@ lane_a() {
     # seconds, user + sys of the case). The core is still compiled with
     # -mcpu=cortex-m0plus by the host stage's config_size_table
     # (tools/size/config-size.sh, -Os and -O2).
-    for cpu_abi in ${CONSUMER_CPUS:-cortex-m0 cortex-m3 cortex-m4 cortex-m4f:softfp cortex-m4f:hard \
-        cortex-m7:softfp cortex-m7:hard cortex-m33:hard cortex-m55:hard cortex-m55:soft}; do
+    # add_subdirectory into a cross build: the hard-float M4F, and the float
+    # ABIs no CI stage links (M4F and M7 softfp, M55 soft). The other
+    # CPU/ABI pairs (M0, M3 and M4 soft, M7, M33 and M55 hard) are linked
+    # from the same core, toolchain file and flags, and run on the same
+    # QEMU boards, by their cross stage of tests/run-all.sh; CONSUMER_CPUS
+    # names them all for a run of every pair (about 20 CPU seconds each).
+    for cpu_abi in ${CONSUMER_CPUS:-cortex-m4f:hard cortex-m4f:softfp cortex-m7:softfp cortex-m55:soft}; do
         cpu=${cpu_abi%%:*}
         abi=
         [ "$cpu" = "$cpu_abi" ] || abi=${cpu_abi#*:}
