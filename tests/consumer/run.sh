@@ -497,18 +497,14 @@ lane_a() {
     check headers_cxx11_gxx headers g++ "$strict_cxx" cpp
     check headers_cxx11_clangxx headers clang++ "$strict_cxx" cpp
     check subdir_host subdir_host
-    # No subdir_cortex-m0plus: its build was subdir_cortex-m0's, byte for byte
-    # (the same libzline.a, the same firmware image: objcopy -O binary of both
-    # consumer.elf files compared), run on the same QEMU board (17.6 CPU
-    # seconds, user + sys of the case). The core is still compiled with
-    # -mcpu=cortex-m0plus by the host stage's config_size_table
-    # (tools/size/config-size.sh, -Os and -O2).
     # add_subdirectory into a cross build: the hard-float M4F, and the float
     # ABIs no CI stage links (M4F and M7 softfp, M55 soft). The other
     # CPU/ABI pairs (M0, M3 and M4 soft, M7, M33 and M55 hard) are linked
     # from the same core, toolchain file and flags, and run on the same
     # QEMU boards, by their cross stage of tests/run-all.sh; CONSUMER_CPUS
-    # names them all for a run of every pair (about 20 CPU seconds each).
+    # names any of them (about 20 CPU seconds each). The M0+ needs no case of
+    # its own: its build was the M0's byte for byte (libzline.a and the
+    # firmware image), and config_size_table compiles -mcpu=cortex-m0plus.
     for cpu_abi in ${CONSUMER_CPUS:-cortex-m4f:hard cortex-m4f:softfp cortex-m7:softfp cortex-m55:soft}; do
         cpu=${cpu_abi%%:*}
         abi=

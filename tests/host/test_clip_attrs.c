@@ -89,37 +89,14 @@ typedef struct {
     long double wmin;    /* least w of the triangle clipped to near and far */
 } tri_ref;
 
-/* The least w of the triangle's part with 0 <= z <= w (Sutherland-Hodgman
- * on the two planes, in long double). */
+/* The least w of the triangle's part with 0 <= z <= w (zt_clip_near_far). */
 static long double clipped_wmin(const zl_vec4 v[3])
 {
-    long double p[2][8][2]; /* z, w */
-    int n = 3, k, plane, m;
+    long double p[ZT_CLIP_MAX][4];
+    int made[ZT_CLIP_MAX], n = zt_clip_near_far(v, p, made), k;
     long double best = 1e30L;
-    for (k = 0; k < 3; k++) {
-        p[0][k][0] = v[k].z;
-        p[0][k][1] = v[k].w;
-    }
-    for (plane = 0; plane < 2; plane++) {
-        long double(*src)[2] = p[plane], (*dst)[2] = p[1 - plane];
-        m = 0;
-        for (k = 0; k < n; k++) {
-            const long double *a = src[k], *b = src[(k + 1) % n];
-            long double da = plane == 0 ? a[0] : a[1] - a[0], db = plane == 0 ? b[0] : b[1] - b[0];
-            if (da >= 0) {
-                dst[m][0] = a[0];
-                dst[m++][1] = a[1];
-            }
-            if ((da >= 0) != (db >= 0)) {
-                long double t = da / (da - db);
-                dst[m][0] = a[0] + t * (b[0] - a[0]);
-                dst[m++][1] = a[1] + t * (b[1] - a[1]);
-            }
-        }
-        n = m;
-    }
     for (k = 0; k < n; k++)
-        best = p[0][k][1] < best ? p[0][k][1] : best;
+        best = p[k][3] < best ? p[k][3] : best;
     return best;
 }
 

@@ -177,39 +177,12 @@ static void draw_all_modes(const zl_mesh *mesh, const zl_mat4 *mvp, const zl_sta
     draw_565_less(mesh, mvp, st);
 }
 
-/* The vertices clipping makes from t's (against z >= 0 and z <= w, in
- * long double, as zline.h's clipper does in Q16.16): made_w and made_reach
- * of t. */
+/* The vertices clipping makes from t's (zt_clip_near_far: against z >= 0
+ * and z <= w, as zline's clipper does in Q16.16): made_w and made_reach of t. */
 static void clip_made(tri_ref *t)
 {
-    long double p[9][4], q[9][4];
-    int n = 3, made[9] = {0}, qmade[9], plane, k, c;
-    for (k = 0; k < 3; k++) {
-        p[k][0] = t->v[k].x;
-        p[k][1] = t->v[k].y;
-        p[k][2] = t->v[k].z;
-        p[k][3] = t->v[k].w;
-    }
-    for (plane = 0; plane < 2; plane++) { /* Sutherland-Hodgman: z >= 0, then w - z >= 0 */
-        int m = 0;
-        for (k = 0; k < n; k++) {
-            const long double *a = p[k], *b = p[(k + 1) % n];
-            long double da = plane == 0 ? a[2] : a[3] - a[2], db = plane == 0 ? b[2] : b[3] - b[2];
-            if (da >= 0) {
-                memcpy(q[m], a, sizeof q[m]);
-                qmade[m++] = made[k];
-            }
-            if ((da >= 0) != (db >= 0)) {
-                long double s = da / (da - db);
-                for (c = 0; c < 4; c++)
-                    q[m][c] = a[c] + s * (b[c] - a[c]);
-                qmade[m++] = 1;
-            }
-        }
-        memcpy(p, q, sizeof p);
-        memcpy(made, qmade, sizeof made);
-        n = m;
-    }
+    long double p[ZT_CLIP_MAX][4];
+    int made[ZT_CLIP_MAX], n = zt_clip_near_far(t->v, p, made), k, c;
     t->made_w = 1e30L;
     t->made_reach = 0;
     for (k = 0; k < n; k++) {

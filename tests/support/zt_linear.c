@@ -48,3 +48,41 @@ int zt_solve3(long double a[3][3], long double r[3], long double x[3])
     }
     return 1;
 }
+
+/* One Sutherland-Hodgman pass: plane 0 keeps z >= 0, plane 1 keeps w - z >= 0. */
+static int clip_pass(int plane, long double src[][4], const int *src_made, int n, long double dst[][4],
+                     int *dst_made)
+{
+    int k, c, m = 0;
+    for (k = 0; k < n; k++) {
+        const long double *a = src[k], *b = src[(k + 1) % n];
+        long double da = plane == 0 ? a[2] : a[3] - a[2], db = plane == 0 ? b[2] : b[3] - b[2];
+        if (da >= 0) {
+            for (c = 0; c < 4; c++)
+                dst[m][c] = a[c];
+            dst_made[m++] = src_made[k];
+        }
+        if ((da >= 0) != (db >= 0)) {
+            long double s = da / (da - db);
+            for (c = 0; c < 4; c++)
+                dst[m][c] = a[c] + s * (b[c] - a[c]);
+            dst_made[m++] = 1;
+        }
+    }
+    return m;
+}
+
+int zt_clip_near_far(const zl_vec4 v[3], long double out[ZT_CLIP_MAX][4], int made[ZT_CLIP_MAX])
+{
+    long double mid[ZT_CLIP_MAX][4];
+    int mid_made[ZT_CLIP_MAX], k, n;
+    for (k = 0; k < 3; k++) {
+        out[k][0] = v[k].x;
+        out[k][1] = v[k].y;
+        out[k][2] = v[k].z;
+        out[k][3] = v[k].w;
+        made[k] = 0;
+    }
+    n = clip_pass(0, out, made, 3, mid, mid_made); /* a triangle cut by one plane: at most 4 */
+    return clip_pass(1, mid, mid_made, n, out, made);
+}
